@@ -1,0 +1,238 @@
+#include "remnant/scheduler.hpp"
+
+#include <limits>
+
+#include "test_helpers.hpp"
+
+using namespace remnant;
+using remnant::test::expect_error;
+
+namespace {
+
+// A grid with one small block that records which groups it was asked to synchronise.
+class RecordingGrid final : public GridDriver {
+ public:
+  explicit RecordingGrid(const VariableRegistry& vars)
+      : block_(0, 0, {0, 0, 0}, {4, 1, 1}, {1, 0, 0}, {0, 0, 0}, {0.25, 1, 1}, vars) {
+    blocks_.push_back(&block_);
+  }
+  int dimension() const override { return 1; }
+  std::span<Block* const> local_blocks() override { return blocks_; }
+  void synchronize(std::span<const int> groups) override { synced.insert(synced.end(), groups.begin(), groups.end()); }
+  double reduce(int, int, ReductionKind) override { return 0; }
+  std::int64_t global_cells() const override { return 4; }
+  double min_spacing() const override { return 0.25; }
+  std::string describe() const override { return "recording grid"; }
+  MPI_Comm comm() const override { return MPI_COMM_WORLD; }
+  std::vector<int> synced;
+  Block block_;
+  std::vector<Block*> blocks_;
+};
+
+struct Harness {
+  std::vector<ThornSpec> specs;
+  VariableRegistry vars;
+  Parameters params;
+  ImplementationTable impl;
+  std::vector<std::string> calls;
+
+  explicit Harness(std::initializer_list<const char*> yamls) {
+    int i = 0;
+    for (const char* y : yamls) specs.push_back(parse_thorn_spec(y, "thorn" + std::to_string(i++) + ".yaml"));
+    for (const auto& s : specs) {
+      for (const auto& v : s.variables) vars.add(v);
+      for (const auto& p : s.parameters) params.declare(p);
+      for (const auto& it : s.schedule)
+        if (!it.is_group) {
+          const std::string name = it.thorn + "::" + it.name;
+          impl.functions[name] = [this, name](Context&) { calls.push_back(name); };
+        }
+    }
+    vars.resolve_rhs();
+  }
+  std::vector<const ThornSpec*> ptrs() const {
+    std::vector<const ThornSpec*> out;
+    for (const auto& s : specs) out.push_back(&s);
+    return out;
+  }
+  Scheduler make() { return Scheduler(ptrs(), vars, params, impl); }
+};
+
+const char* kProducerConsumer = R"(thorn: A
+variables:
+  - {group: u, tensor: [scalar u], role: evolved, rhs: u_rhs}
+  - {group: u_rhs, tensor: [scalar u]}
+  - {group: diag, tensor: [scalar d]}
+schedule:
+  - function: Analyse
+    in: analysis
+    reads: [u_rhs]
+    writes: [diag]
+    description: reads u_rhs, so runs after its writer
+  - function: Rhs
+    in: analysis
+    reads: [u(everywhere)]
+    writes: [u_rhs]
+    description: writes u_rhs
+  - function: Late
+    in: analysis
+    description: explicitly last
+    after: [Analyse]
+  - function: First
+    in: analysis
+    before: [Rhs]
+    description: explicitly first
+)";
+
+}  // namespace
+
+TEST(Scheduler, WriterBeforeReaderAndExplicitOrdering) {
+  Harness h{kProducerConsumer};
+  Scheduler s = h.make();
+  Context ctx(h.params, h.vars, MPI_COMM_WORLD);
+  RecordingGrid grid(h.vars);
+  ctx.set_grid(&grid);
+  s.run_bin("analysis", ctx);
+  EXPECT_EQ(h.calls, (std::vector<std::string>{"A::First", "A::Rhs", "A::Analyse", "A::Late"}));
+  const std::string printed = s.print();
+  EXPECT_LT(printed.find("startup:"), printed.find("evol:"));
+  EXPECT_LT(printed.find("evol:"), printed.find("analysis:"));
+  EXPECT_NE(printed.find("A::Rhs"), std::string::npos);
+}
+
+TEST(Scheduler, SynchronisesStaleGhostsOnlyWhenNeeded) {
+  Harness h{R"(thorn: A
+variables:
+  - {group: u, tensor: [scalar u]}
+schedule:
+  - function: Write
+    in: evol
+    writes: [u(interior)]
+    description: leaves ghosts stale
+  - function: Read
+    in: evol
+    reads: [u(everywhere)]
+    description: needs ghosts
+  - function: ReadAgain
+    in: evol
+    reads: [u(everywhere)]
+    after: [Read]
+    description: ghosts still valid
+)"};
+  Scheduler s = h.make();
+  Context ctx(h.params, h.vars, MPI_COMM_WORLD);
+  RecordingGrid grid(h.vars);
+  ctx.set_grid(&grid);
+  s.run_bin("evol", ctx);
+  EXPECT_EQ(grid.synced, (std::vector<int>{0}));  // once, before Read; not again before ReadAgain
+  s.run_bin("evol", ctx);                          // Write stales them again
+  EXPECT_EQ(grid.synced, (std::vector<int>{0, 0}));
+}
+
+TEST(Scheduler, CycleIsReportedWithItsPath) {
+  Harness h{R"(thorn: Cyc
+variables:
+  - {group: a, tensor: [scalar a]}
+  - {group: b, tensor: [scalar b]}
+schedule:
+  - function: MakeA
+    in: evol
+    reads: [b]
+    writes: [a]
+    description: needs b
+  - function: MakeB
+    in: evol
+    reads: [a]
+    writes: [b]
+    description: needs a
+)"};
+  expect_error<InputError>([&] { h.make(); }, {"schedule cycle in 'evol'", "Cyc::MakeA -> Cyc::MakeB -> Cyc::MakeA",
+                                               "writes Cyc::a, which 'MakeB' reads"});
+}
+
+TEST(Scheduler, ExplicitCycleAcrossThorns) {
+  Harness h{R"(thorn: X
+schedule:
+  - {function: F, in: initial, before: [G], description: f}
+)",
+            R"(thorn: Y
+schedule:
+  - {function: G, in: initial, before: [F], description: g}
+)"};
+  expect_error<InputError>([&] { h.make(); }, {"schedule cycle in 'initial'", "X::F -> Y::G -> X::F", "declares before: G"});
+}
+
+TEST(Scheduler, UnknownTargetsAndContainers) {
+  Harness bad_target{R"(thorn: X
+schedule:
+  - {function: F, in: initial, after: [Missing], description: f}
+)"};
+  expect_error<InputError>([&] { bad_target.make(); }, {"thorn0.yaml:3:40", "'Missing'", "not scheduled"});
+  Harness optional_target{R"(thorn: X
+schedule:
+  - {function: F, in: initial, after: [{name: Missing, optional: true}], description: f}
+)"};
+  EXPECT_NO_THROW(optional_target.make());
+  Harness bad_bin{R"(thorn: X
+schedule:
+  - {function: F, in: evolve, description: f}
+)"};
+  expect_error<InputError>([&] { bad_bin.make(); }, {"neither a bin nor a group", "did you mean evol"});
+}
+
+TEST(Scheduler, EveryConditionAndRepeatedGroup) {
+  Harness h{R"(thorn: M
+parameters:
+  - {name: enabled, type: bool, default: false, description: switch}
+  - {name: method, type: keyword, values: [a, b], default: b, description: choice}
+schedule:
+  - {group: Loop, in: evol, repeat_while: MoreSubsteps, description: substeps}
+  - {function: Substep, in: Loop, description: one substep}
+  - {function: Sometimes, in: evol, after: [Loop], every: 2, description: every second iteration}
+  - {function: Never, in: evol, if: "M::enabled", description: disabled}
+  - {function: WhenB, in: evol, if: "M::method == b", description: enabled by keyword}
+)"};
+  int remaining = 0;
+  h.impl.predicates["M::MoreSubsteps"] = [&](Context&) { return remaining-- > 0; };
+  Scheduler s = h.make();
+  Context ctx(h.params, h.vars, MPI_COMM_WORLD);
+  for (int it = 0; it < 2; ++it) {
+    ctx.clock().iteration = it;
+    remaining = 3;
+    s.run_bin("evol", ctx);
+  }
+  EXPECT_EQ(h.calls, (std::vector<std::string>{"M::Substep", "M::Substep", "M::Substep", "M::Sometimes", "M::WhenB",
+                                               "M::Substep", "M::Substep", "M::Substep", "M::WhenB"}));
+  EXPECT_NE(s.timer_table().find("M::Substep"), std::string::npos);
+}
+
+TEST(Scheduler, DebugModeCatchesUndeclaredWritesAndUnwrittenOutputs) {
+  Harness h{R"(thorn: D
+variables:
+  - {group: u, tensor: [scalar u]}
+  - {group: v, tensor: [scalar v]}
+schedule:
+  - {function: Sneaky, in: evol, writes: [u], description: also writes v}
+  - {function: Lazy, in: analysis, writes: [v], description: writes nothing}
+  - {function: Honest, in: initial, writes: [u, v], description: writes both}
+)"};
+  h.impl.functions["D::Sneaky"] = [](Context& c) {
+    for (Block* b : c.grid().local_blocks()) {
+      for_interior(*b, [&](int i, int j, int k) { b->field(0, 0)(i, j, k) = 1; });
+      b->field(1, 0)(0, 0, 0) = 42;  // not declared
+    }
+  };
+  h.impl.functions["D::Lazy"] = [](Context&) {};
+  h.impl.functions["D::Honest"] = [](Context& c) {
+    for (Block* b : c.grid().local_blocks())
+      for_interior(*b, [&](int i, int j, int k) { b->field(0, 0)(i, j, k) = b->field(1, 0)(i, j, k) = 2; });
+  };
+  Scheduler s = h.make();
+  s.set_debug(true);
+  Context ctx(h.params, h.vars, MPI_COMM_WORLD);
+  RecordingGrid grid(h.vars);
+  ctx.set_grid(&grid);
+  EXPECT_NO_THROW(s.run_bin("initial", ctx));
+  expect_error<RunError>([&] { s.run_bin("evol", ctx); }, {"D::Sneaky changed D::v without declaring it"});
+  expect_error<RunError>([&] { s.run_bin("analysis", ctx); }, {"after D::Lazy", "D::v", "are NaN"});
+}

@@ -1,0 +1,79 @@
+#include "remnant/thorn_spec.hpp"
+#include "test_helpers.hpp"
+
+using namespace remnant;
+using remnant::test::expect_error;
+
+TEST(ThornSpec, ParsesAFullThorn) {
+  auto t = parse_thorn_spec(R"(thorn: Hydro
+provides: [hydro]
+requires: [grid]
+variables:
+  - group: cons
+    tensor: [scalar D, covector S, scalar tau]
+    role: evolved
+    rhs: cons_rhs
+  - group: cons_rhs
+    tensor: [scalar D, covector S, scalar tau]
+  - group: B
+    centering: face_x
+    tensor: [axial_vector B]
+parameters:
+  - {name: cfl, type: real, range: "(0:1]", default: 0.3, steerable: recover, description: Courant factor}
+schedule:
+  - function: Hydro_RHS
+    in: evol
+    reads: [cons(everywhere), Grid::coords]
+    writes: [cons_rhs]
+    after: [{name: Other, optional: true}]
+    every: 2
+    if: "Hydro::cfl == 0.3"
+    description: right-hand side
+)", "thorns/Hydro/thorn.yaml");
+  EXPECT_EQ(t.name, "Hydro");
+  ASSERT_EQ(t.variables.size(), 3u);
+  EXPECT_EQ(t.variables[0].ncomp(), 5);
+  EXPECT_EQ(t.variables[0].components[1].name, "S1");
+  EXPECT_TRUE(t.variables[0].checkpoint);  // evolved groups are checkpointed by default
+  EXPECT_EQ(t.variables[2].centering, Centering::face_x);
+  ASSERT_EQ(t.schedule.size(), 1u);
+  const auto& s = t.schedule[0];
+  EXPECT_EQ(s.reads.size(), 2u);
+  EXPECT_EQ(s.reads[0].region, Region::everywhere);
+  EXPECT_EQ(s.reads[1].group, "Grid::coords");
+  EXPECT_TRUE(s.after[0].optional);
+  EXPECT_EQ(s.every, 2);
+  EXPECT_EQ(s.condition.op, Condition::Op::equal);
+  EXPECT_EQ(t.parameters[0].steerable, Steerable::recover);
+}
+
+TEST(ThornSpec, ReflectionParitiesFollowTensorType) {
+  auto v = expand_tensor(TensorKind::vector, "v");
+  EXPECT_EQ(v[0].reflection_parity, (std::array<int, 3>{-1, 1, 1}));
+  EXPECT_EQ(v[2].reflection_parity, (std::array<int, 3>{1, 1, -1}));
+  auto b = expand_tensor(TensorKind::axial_vector, "B");
+  EXPECT_EQ(b[2].reflection_parity, (std::array<int, 3>{-1, -1, 1}));  // B^z is even across the equator
+  auto g = expand_tensor(TensorKind::tensor_dd, "g");
+  ASSERT_EQ(g.size(), 6u);
+  EXPECT_EQ(g[0].name, "g11");
+  EXPECT_EQ(g[0].reflection_parity, (std::array<int, 3>{1, 1, 1}));
+  EXPECT_EQ(g[1].name, "g12");
+  EXPECT_EQ(g[1].reflection_parity, (std::array<int, 3>{-1, -1, 1}));
+}
+
+TEST(ThornSpec, SchemaErrorsNameFileAndLine) {
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nparameters:\n  - {name: x, type: real, description: d}\n", "a.yaml"); },
+                           {"a.yaml:3:5", "needs a 'default'"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nparameters:\n  - {name: x, type: float, default: 1, description: d}\n", "a.yaml"); },
+                           {"a.yaml:3", "type 'float' is not one of"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nschedul: []\n", "a.yaml"); }, {"a.yaml:2:1", "did you mean 'schedule'"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nschedule:\n  - function: f\n    in: evol\n", "a.yaml"); },
+                           {"a.yaml:3:5", "needs a 'description'"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - group: u\n    tensor: [spinor u]\n", "a.yaml"); },
+                           {"a.yaml:4:14", "kind one of"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - group: u\n    tensor: [scalar u]\n    role: evolved\n", "a.yaml"); },
+                           {"needs 'rhs"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nschedule:\n  - function: f\n    in: evol\n    reads: [u(ghosts)]\n    description: d\n", "a.yaml"); },
+                           {"a.yaml:5:13", "region 'ghosts'"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nparameters: [\n", "a.yaml"); }, {"a.yaml:", "YAML syntax error"});
+}

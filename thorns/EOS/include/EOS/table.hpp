@@ -1,0 +1,81 @@
+#pragma once
+// The one internal representation of a tabulated EOS, whatever file format it came from.
+//   axes: ln(rho) (code units), ln(T/MeV), Ye; each uniform.
+//   thermo: per grid point kThermoStride doubles {ln(p+p_shift), ln(eps+eps_shift), cs2, s,
+//           mu_e, mu_p, mu_n, pad}: one 64-byte line, [iye][iT][irho] order (rho fastest).
+//   compo (optional): per grid point {Xa, Xh, Xn, Xp, Abar, Zbar}, same order.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "EOS/check_report.hpp"
+#include "EOS/types.hpp"
+
+namespace remnant::eos {
+
+struct Axis {
+  double x0 = 0, dx = 1, inv_dx = 0;  // inv_dx = 0 for a single-point axis
+  int n = 0;
+  double lo() const { return x0; }
+  double hi() const { return x0 + dx * (n - 1); }
+  double node(int i) const { return x0 + dx * i; }
+};
+
+enum ThermoField : int { kLogP = 0, kLogEps, kCs2, kEntropy, kMuE, kMuP, kMuN, kThermoFields };
+inline constexpr int kThermoStride = 8;
+enum CompoField : int { kXa = 0, kXh, kXn, kXp, kAbar, kZbar, kCompoFields };
+
+struct TableData {
+  std::string file;     // where it was read from
+  std::string format;   // "StellarCollapse HDF5", "CompOSE ASCII", "CompOSE HDF5", ...
+  Axis lrho, lT, ye;
+  double eps_shift = 0;  // code units, > -min(eps)
+  double p_shift = 0;    // code units, 0 unless the table has p <= 0
+  bool has_chem = false;
+  bool has_compo = false;
+  std::vector<double> thermo;
+  std::vector<double> compo;
+  // Per (iye, irho) cell: 1 if eps rises with T along all four corner columns.
+  std::vector<std::uint8_t> monotone_cell;
+  Bounds bounds;
+  CheckReport report;
+
+  std::size_t points() const { return std::size_t(lrho.n) * lT.n * ye.n; }
+  std::size_t index(int ir, int it, int iy) const {
+    return (std::size_t(iy) * lT.n + it) * lrho.n + ir;
+  }
+  double at(int ir, int it, int iy, int field) const {
+    return thermo[index(ir, it, iy) * kThermoStride + field];
+  }
+};
+
+// Reader output before conversion: physical values in code units (T in MeV), [iye][iT][irho].
+// Each field remembers the dataset it came from, so that checks can name it.
+struct RawField {
+  std::string dataset;
+  std::vector<double> v;
+  bool present() const { return !v.empty(); }
+};
+
+struct RawTable {
+  std::string file, format;
+  std::vector<double> rho, T, ye;          // axis values: rho (code), T (MeV), Ye
+  std::string rho_dataset = "logrho", T_dataset = "logtemp", ye_dataset = "ye";
+  RawField press, eps, cs2, entropy, mu_e, mu_p, mu_n;  // press, eps, cs2 required
+  RawField Xa, Xh, Xn, Xp, Abar, Zbar;                  // optional composition
+  double eps_shift = -1;  // preferred shift (code units); < 0: choose automatically
+  std::size_t size() const { return rho.size() * T.size() * ye.size(); }
+};
+
+struct BuildOptions {
+  bool clamp_cs2 = true;        // clamp cs2 into [0, 1] after counting the violations
+  double axis_tolerance = 1e-6;  // allowed deviation from a uniform axis, in units of the spacing
+};
+
+// Checks a raw table (throws TableError for errors, records warnings) and builds the internal
+// representation with its bounds.
+std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& opts = {});
+
+}  // namespace remnant::eos

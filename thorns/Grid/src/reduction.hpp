@@ -1,0 +1,24 @@
+#pragma once
+// Global reductions that give the same bits for any number of ranks: one partial per block,
+// gathered to every rank in gid order and combined in that order.
+#include <mpi.h>
+
+#include <span>
+
+#include "block_layout.hpp"
+
+namespace remnant::grid {
+
+struct BlockPartial {
+  double value = 0;   // sum, min, max, Σ u dV, Σ |u| dV or Σ u² dV over the block's interior
+  double volume = 0;  // Σ dV over the block's interior
+};
+
+BlockPartial block_partial(Block& block, int group, int comp, ReductionKind kind);
+double combine(std::span<const BlockPartial> partials, ReductionKind kind);
+
+// `blocks` are this rank's blocks in gid order, as `layout` distributes them.
+double reduce_blocks(std::span<Block* const> blocks, const BlockLayout& layout, int group, int comp,
+                     ReductionKind kind, MPI_Comm comm);
+
+}  // namespace remnant::grid

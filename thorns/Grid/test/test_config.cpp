@@ -1,0 +1,134 @@
+// Grid settings: the thorn.yaml declarations, parameter reading, and clear errors.
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "config.hpp"
+#include "grid_test_util.hpp"
+#include "remnant/parameters.hpp"
+#include "remnant/thorn_spec.hpp"
+
+namespace remnant::grid::test {
+namespace {
+
+std::string error_of(const UniformGridConfig& c) {
+  try {
+    checked(c);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(GridConfig, BlockSizeMustDivideCellsAndTheMessageNamesBoth) {
+  UniformGridConfig c;
+  c.ncells = {32, 30, 32};
+  const std::string e = error_of(c);
+  EXPECT_NE(e.find("Grid::ncells[1] = 30"), std::string::npos) << e;
+  EXPECT_NE(e.find("Grid::block_size[1] = 16"), std::string::npos) << e;
+}
+
+TEST(GridConfig, PeriodicOnOneSideOnlyIsAnError) {
+  UniformGridConfig c;
+  c.boundary_lower[2] = Boundary::periodic;
+  EXPECT_NE(error_of(c).find("periodic on one side only"), std::string::npos) << error_of(c);
+}
+
+TEST(GridConfig, CurvilinearCoordinatesComeLater) {
+  UniformGridConfig c;
+  c.coordinates = "spherical";
+  EXPECT_NE(error_of(c).find("come with the Grid issue"), std::string::npos) << error_of(c);
+}
+
+TEST(GridConfig, BlocksMustHoldTheGhostWidth) {
+  UniformGridConfig c;
+  c.ncells = {32, 32, 32};
+  c.block_size = {16, 2, 16};
+  EXPECT_NE(error_of(c).find("smaller than Grid::ghost_zones = 3"), std::string::npos) << error_of(c);
+}
+
+TEST(GridConfig, EntriesBeyondTheDimensionAreIgnored) {
+  UniformGridConfig c;
+  c.dimension = 1;
+  c.ncells = {64, 30, 7};  // 30 and 7 would not divide by 16, but they are not used
+  c.boundary_lower[1] = Boundary::periodic;
+  const UniformGridConfig k = checked(c);
+  EXPECT_EQ(k.ncells, (std::array<std::int64_t, 3>{64, 1, 1}));
+  EXPECT_EQ(k.block_size, (std::array<int, 3>{16, 1, 1}));
+  EXPECT_EQ(k.boundary_lower[1], Boundary::outflow);
+}
+
+ThornSpec grid_thorn_spec() {
+  const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/Grid/thorn.yaml";
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return parse_thorn_spec(text.str(), "thorns/Grid/thorn.yaml");
+}
+
+TEST(GridConfig, ThornYamlDefaultsGiveTheDefaultConfig) {
+  const ThornSpec spec = grid_thorn_spec();
+  EXPECT_EQ(spec.provides, (std::vector<std::string>{"grid"}));
+  Parameters params;
+  for (const auto& p : spec.parameters) params.declare(p);
+  const UniformGridConfig c = config_from_parameters(params);
+  const UniformGridConfig d = checked(UniformGridConfig{});
+  EXPECT_EQ(c.coordinates, d.coordinates);
+  EXPECT_EQ(c.dimension, d.dimension);
+  EXPECT_EQ(c.ncells, d.ncells);
+  EXPECT_EQ(c.block_size, d.block_size);
+  EXPECT_EQ(c.xmin, d.xmin);
+  EXPECT_EQ(c.xmax, d.xmax);
+  EXPECT_EQ(c.ghost_zones, d.ghost_zones);
+  EXPECT_EQ(c.boundary_lower, d.boundary_lower);
+  EXPECT_EQ(c.boundary_upper, d.boundary_upper);
+
+  VariableRegistry vars;
+  UniformGrid grid(GridSetup{params, vars, MPI_COMM_SELF});
+  EXPECT_EQ(grid.global_cells(), 32 * 32 * 32);
+  EXPECT_EQ(grid.local_blocks().size(), 8u);
+}
+
+TEST(GridConfig, ParameterErrorsNameTheParfileLocation) {
+  const ThornSpec spec = grid_thorn_spec();
+  Parameters params;
+  for (const auto& p : spec.parameters) params.declare(p);
+  params.set("Grid", "block_size", std::vector<std::int64_t>{16, 12, 16}, {"run.yaml", 7, 15});
+  try {
+    config_from_parameters(params);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("run.yaml:7:15"), std::string::npos) << e.what();
+  }
+  params.set("Grid", "block_size", std::vector<std::int64_t>{16, 16, 16}, {"run.yaml", 7, 15});
+  params.set("Grid", "coordinates", std::string("cylindrical"), {"run.yaml", 3, 16});
+  try {
+    config_from_parameters(params);
+    FAIL() << "expected an InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("run.yaml:3:16"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GridConfig, DescribeAndSpacing) {
+  UniformGridConfig c;
+  c.dimension = 2;
+  c.ncells = {64, 32, 1};
+  c.block_size = {16, 16, 1};
+  c.boundary_lower[0] = c.boundary_upper[0] = Boundary::periodic;
+  c.boundary_upper[1] = Boundary::reflect;
+  VariableRegistry vars;
+  UniformGrid grid(c, vars, MPI_COMM_SELF);
+  EXPECT_EQ(grid.dimension(), 2);
+  EXPECT_EQ(grid.global_cells(), 64 * 32);
+  EXPECT_DOUBLE_EQ(grid.min_spacing(), 2.0 / 64);
+  const std::string d = grid.describe();
+  EXPECT_NE(d.find("64 x 32 = 2048"), std::string::npos) << d;
+  EXPECT_NE(d.find("4 x 2 = 8 blocks"), std::string::npos) << d;
+  EXPECT_NE(d.find("x: periodic, y: outflow/reflect"), std::string::npos) << d;
+}
+
+}  // namespace
+}  // namespace remnant::grid::test

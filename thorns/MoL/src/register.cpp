@@ -1,0 +1,148 @@
+// MoL: Runge-Kutta substeps over every evolved group, the CFL time step and the end of the run.
+#include <mpi.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <vector>
+
+#include "remnant/context.hpp"
+#include "remnant/registrar.hpp"
+#include "runge_kutta.hpp"
+
+namespace remnant::mol {
+namespace {
+
+// Per-simulation state, published as a service so that several simulations in one process
+// (tests) do not share it.
+struct State {
+  const std::vector<RungeKuttaStage>* stages = nullptr;
+  std::size_t next_stage = 0;
+  double t0 = 0;
+  double wall_start = 0;
+  // Copy of every evolved group at the start of the step, per local block.
+  std::map<std::pair<std::int64_t, int>, std::vector<double>> u0;
+};
+
+State& state(Context& ctx) {
+  if (!ctx.has_service("MoL::state")) {
+    auto s = std::make_shared<State>();
+    s->stages = &runge_kutta_stages(ctx.param<std::string>("MoL", "method"));
+    s->wall_start = MPI_Wtime();
+    ctx.publish("MoL::state", s);
+  }
+  return ctx.service<State>("MoL::state");
+}
+
+void check_parameters(Context& ctx) {
+  state(ctx);
+  const double final_time = ctx.param<double>("MoL", "final_time");
+  const auto max_it = ctx.param<std::int64_t>("MoL", "max_iterations");
+  const double max_wall = ctx.param<double>("MoL", "max_walltime_hours");
+  if (final_time < 0 && max_it < 0 && max_wall <= 0)
+    throw InputError(ctx.params().origin("MoL", "final_time"),
+                     "the run would never end: set MoL::final_time, MoL::max_iterations or MoL::max_walltime_hours");
+  if (ctx.vars().evolved().empty()) ctx.warn("no active thorn declares an evolved variable group: nothing to integrate");
+}
+
+void compute_time_step(Context& ctx) {
+  const double fixed = ctx.param<double>("MoL", "dt");
+  double dt = fixed;
+  if (dt <= 0) {
+    const double inv = ctx.max_inverse_dt();
+    if (!(inv > 0) || !std::isfinite(inv))
+      throw RunError("no thorn limits the time step (max 1/dt = " + std::to_string(inv) + "); set MoL::dt");
+    dt = ctx.param<double>("MoL", "cfl") / inv;
+  }
+  // Land exactly on final_time so that outputs at the end are comparable between resolutions.
+  const double final_time = ctx.param<double>("MoL", "final_time");
+  if (final_time >= 0 && ctx.time() + dt > final_time) dt = final_time - ctx.time();
+  ctx.clock().dt = dt;
+}
+
+bool next_substep(Context& ctx) {
+  State& s = state(ctx);
+  auto& clock = ctx.clock();
+  if (s.next_stage == 0) {
+    s.t0 = clock.time;
+    for (Block* b : ctx.grid().local_blocks())
+      for (int g : ctx.vars().evolved()) {
+        auto& copy = s.u0[{b->gid, g}];
+        copy.assign(b->data(g), b->data(g) + b->size(g));
+      }
+  }
+  if (s.next_stage == s.stages->size()) {
+    s.next_stage = 0;
+    clock.substep = 0;
+    clock.time = s.t0 + clock.dt;
+    return false;
+  }
+  clock.substep = static_cast<int>(s.next_stage);
+  clock.time = s.t0 + (*s.stages)[s.next_stage].c * clock.dt;
+  return true;
+}
+
+void update(Context& ctx) {
+  State& s = state(ctx);
+  const std::size_t stage = s.next_stage;
+  const RungeKuttaStage& st = (*s.stages)[stage];
+  const double dt = ctx.dt();
+  for (Block* b : ctx.grid().local_blocks())
+    for (int g : ctx.vars().evolved()) {
+      const auto& spec = ctx.vars().group(g);
+      const double* u0 = s.u0.at({b->gid, g}).data();
+      for (int c = 0; c < spec.ncomp(); ++c) {
+        Field u = b->field(g, c);
+        Field rhs = b->field(spec.rhs_id, c);
+        // Interior rows are contiguous in i: update row by row.
+        for (int k = 0; k < b->n[2]; ++k)
+          for (int j = 0; j < b->n[1]; ++j) {
+            double* urow = &u(0, j, k);
+            const double* rrow = &rhs(0, j, k);
+            const double* u0row = u0 + (urow - b->data(g));
+            runge_kutta_update(urow, u0row, rrow, static_cast<std::size_t>(b->n[0]), st.a, st.b, dt);
+          }
+      }
+    }
+  ++s.next_stage;
+  // The new state lives at t0 + (time after this stage) dt: post-step functions see that time.
+  ctx.clock().time = s.t0 + time_after_stage(*s.stages, stage) * dt;
+}
+
+std::string termination(Context& ctx) {
+  const double final_time = ctx.param<double>("MoL", "final_time");
+  const auto max_it = ctx.param<std::int64_t>("MoL", "max_iterations");
+  const double max_wall = ctx.param<double>("MoL", "max_walltime_hours");
+  std::ostringstream why;
+  if (max_it >= 0 && ctx.iteration() >= max_it) {
+    why << "reached MoL::max_iterations = " << max_it;
+  } else if (final_time >= 0 && ctx.time() >= final_time * (1 - 1e-14)) {
+    why << "reached MoL::final_time = " << final_time;
+  } else if (max_wall > 0 && (MPI_Wtime() - state(ctx).wall_start) / 3600.0 >= max_wall) {
+    why << "reached MoL::max_walltime_hours = " << max_wall;
+  }
+  return why.str();
+}
+
+double progress(Context& ctx) {
+  const double final_time = ctx.param<double>("MoL", "final_time");
+  const auto max_it = ctx.param<std::int64_t>("MoL", "max_iterations");
+  double f = 0;
+  if (final_time > 0) f = std::max(f, ctx.time() / final_time);
+  if (max_it > 0) f = std::max(f, static_cast<double>(ctx.iteration()) / static_cast<double>(max_it));
+  return std::min(f, 1.0);
+}
+
+}  // namespace
+}  // namespace remnant::mol
+
+REMNANT_REGISTER_THORN(MoL) {
+  using namespace remnant::mol;
+  reg.function("MoL_CheckParameters", check_parameters);
+  reg.function("MoL_ComputeTimeStep", compute_time_step);
+  reg.predicate("MoL_NextSubstep", next_substep);
+  reg.function("MoL_Update", update);
+  reg.termination_check(termination);
+  reg.progress_fraction(progress);
+}
