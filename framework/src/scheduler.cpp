@@ -248,6 +248,13 @@ std::vector<ScheduleNode> Scheduler::build_container(const std::string& containe
         for (int id : resolve_access(w, it->thorn, vars))
           (w.region == Region::everywhere ? node.writes_everywhere : node.writes_interior).push_back(id);
     }
+    if (!it->every_param.empty()) {
+      const ParamSpec* spec = params.find(it->every_thorn, it->every_param);
+      if (!spec || spec->type != ParamType::integer || spec->is_array)
+        throw InputError(it->where, "'every: " + it->every_thorn + "::" + it->every_param +
+                                        "' must name an int parameter of an active thorn");
+      node.every_value = &params.get<std::int64_t>(it->every_thorn, it->every_param);
+    }
     if (!it->condition.empty()) {
       const ParamSpec* spec = params.find(it->condition.thorn, it->condition.param);
       if (!spec)
@@ -276,7 +283,11 @@ void Scheduler::invalidate_ghosts() { std::fill(ghosts_valid_.begin(), ghosts_va
 
 bool Scheduler::condition_holds(const ScheduleNode& node, const Context& ctx) const {
   const ScheduleItem& it = *node.item;
-  if (it.every > 1 && ctx.iteration() % it.every != 0) return false;
+  if (node.every_value) {
+    if (*node.every_value <= 0 || ctx.iteration() % *node.every_value != 0) return false;
+  } else if (it.every > 1 && ctx.iteration() % it.every != 0) {
+    return false;
+  }
   if (!node.condition_value) return true;
   switch (it.condition.op) {
     case Condition::Op::is_true: return std::get<bool>(*node.condition_value);
@@ -348,7 +359,10 @@ void Scheduler::call_function(ScheduleNode& node, Context& ctx) {
   if (!stale.empty()) {
     if (!ctx.has_grid())
       throw RunError(it.thorn + "::" + it.name + " reads variables everywhere, but no active thorn provides a grid");
+    const auto t0 = Clock::now();
     ctx.grid().synchronize(stale);
+    sync_seconds_ += std::chrono::duration<double>(Clock::now() - t0).count();
+    ++sync_calls_;
     for (int g : stale) ghosts_valid_[static_cast<std::size_t>(g)] = true;
     ctx.set_current(it.thorn, it.name);
   }
@@ -400,6 +414,7 @@ std::string Scheduler::print() const {
     std::vector<std::string> notes;
     if (!it.repeat_while.empty()) notes.push_back("repeat while " + it.repeat_while);
     if (it.every > 1) notes.push_back("every " + std::to_string(it.every) + " iterations");
+    if (!it.every_param.empty()) notes.push_back("every " + it.every_thorn + "::" + it.every_param + " iterations");
     if (!it.condition.empty()) notes.push_back("if " + it.condition.text);
     if (!node.reads_everywhere.empty()) {
       std::vector<std::string> names;
@@ -452,6 +467,8 @@ std::string Scheduler::timer_table() const {
     os << "  [" << bin << "] " << std::fixed << std::setprecision(4) << s << " s\n";
     for (const auto& n : bins_.at(bin)) emit(n, 2);
   }
+  os << "  automatic ghost synchronisation (included above): " << sync_calls_ << " calls, " << std::fixed
+     << std::setprecision(4) << sync_seconds_ << " s\n";
   return os.str();
 }
 

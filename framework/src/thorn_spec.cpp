@@ -271,12 +271,21 @@ struct Reader {
     s.reads = accesses(n["reads"], what + ".reads");
     s.writes = accesses(n["writes"], what + ".writes");
     if (n["every"]) {
-      try {
-        s.every = n["every"].as<int>();
-      } catch (const YAML::Exception&) {
-        s.every = 0;
+      static const std::regex param_re(R"(([A-Za-z_][A-Za-z0-9_]*)::([A-Za-z_][A-Za-z0-9_]*))");
+      std::smatch m;
+      const std::string text = n["every"].IsScalar() ? n["every"].Scalar() : "";
+      if (std::regex_match(text, m, param_re)) {
+        s.every_thorn = m[1];
+        s.every_param = m[2];
+      } else {
+        try {
+          s.every = n["every"].as<int>();
+        } catch (const YAML::Exception&) {
+          s.every = 0;
+        }
+        if (s.every < 1)
+          throw InputError(at(n["every"]), what + ": 'every' must be an integer >= 1 or an int parameter Thorn::param");
       }
-      if (s.every < 1) throw InputError(at(n["every"]), what + ": 'every' must be an integer >= 1");
     }
     if (n["if"]) s.condition = condition(n["if"]);
     if (!n["description"]) throw InputError(at(n), what + " needs a 'description'");

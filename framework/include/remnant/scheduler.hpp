@@ -20,6 +20,7 @@ struct ScheduleNode {
   Predicate repeat;                          // groups with repeat_while
   std::vector<int> reads_everywhere;         // group ids whose ghosts must be valid first
   std::vector<int> reads, writes_interior, writes_everywhere;
+  const std::int64_t* every_value = nullptr;   // `every: Thorn::param`
   const ParamValue* condition_value = nullptr;
   ParamValue condition_expected;             // for equal / not_equal
   // Timer
@@ -62,6 +63,8 @@ class Scheduler {
   std::map<std::string, std::vector<const ScheduleItem*>> by_container_;
   const VariableRegistry* vars_;
   bool debug_ = false;
+  double sync_seconds_ = 0;
+  long sync_calls_ = 0;
 };
 
 }  // namespace remnant

@@ -41,6 +41,7 @@ struct ScheduleItem {
   std::vector<OrderingRef> before, after;
   std::vector<VariableAccess> reads, writes;
   int every = 1;                // run every N iterations (bins inside the evolution loop)
+  std::string every_thorn, every_param;  // or every Thorn::param iterations (an int; <= 0: never)
   Condition condition;
   std::string repeat_while;     // groups only: predicate registered by the thorn
   std::string description;

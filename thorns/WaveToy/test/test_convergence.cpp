@@ -27,7 +27,7 @@ double final_error_norm(int dim, int n, double final_time) {
   const auto out = std::filesystem::temp_directory_path() / ("remnant_wavetoy_" + std::to_string(::getpid()));
   o.overrides = {"Grid::dimension=" + std::to_string(dim), "Grid::ncells=" + cells, "Grid::block_size=" + block,
                  "WaveToy::wave_numbers=" + k, "MoL::final_time=" + std::to_string(final_time),
-                 "IO::tsv_every=0", "Flesh::out_dir=" + out.string()};
+                 "IO::tsv_every=0", "WaveToy::error_every=1", "Flesh::out_dir=" + out.string()};
   Simulation sim(catalog, o, MPI_COMM_WORLD);
   sim.setup_output_and_grid();
   sim.run();

@@ -1,0 +1,78 @@
+// The thorn binding: thorn.yaml parses, and EOS_Startup builds and publishes the EOS service.
+// Needs the framework (remnant_flesh); built only by the project's CMake.
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <remnant/context.hpp>
+#include <remnant/registrar.hpp>
+#include <remnant/thorn_spec.hpp>
+
+#include "EOS/eos.hpp"
+#include "eos_test_util.hpp"
+
+void remnant_register_thorn_EOS(remnant::ThornRegistrar&);
+
+namespace {
+
+// Mirrors remnant::ThornRegistrar: update when the framework adds a hook.
+struct Recorder : remnant::ThornRegistrar {
+  std::map<std::string, remnant::ScheduledFunction> fns;
+  void function(const std::string& n, remnant::ScheduledFunction f) override { fns[n] = std::move(f); }
+  void predicate(const std::string&, remnant::Predicate) override {}
+  void inverse_dt_limit(std::function<double(remnant::Context&)>) override {}
+  void termination_check(std::function<std::string(remnant::Context&)>) override {}
+  void progress_fraction(std::function<double(remnant::Context&)>) override {}
+  void grid_factory(std::function<std::unique_ptr<remnant::GridDriver>(const remnant::GridSetup&)>) override {}
+};
+
+remnant::ThornSpec spec() {
+  const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/EOS/thorn.yaml";
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return remnant::parse_thorn_spec(s.str(), path);
+}
+
+}  // namespace
+
+TEST(EOSThorn, ThornYamlParsesAndDeclaresStartup) {
+  const remnant::ThornSpec t = spec();
+  EXPECT_EQ(t.name, "EOS");
+  ASSERT_EQ(t.provides.size(), 1u);
+  EXPECT_EQ(t.provides[0], "eos");
+  ASSERT_EQ(t.schedule.size(), 1u);
+  EXPECT_EQ(t.schedule[0].name, "EOS_Startup");
+  Recorder r;
+  remnant_register_thorn_EOS(r);
+  EXPECT_EQ(r.fns.count("EOS_Startup"), 1u);
+}
+
+TEST(EOSThorn, StartupPublishesTheEos) {
+  const std::string table = eos_test::shared_eos("SFHo_reduced_39r_39t_20y_compose.h5");
+  REQUIRE_TABLE(table);
+  remnant::Parameters params;
+  for (auto p : spec().parameters) params.declare(p);
+  remnant::VariableRegistry vars;
+  remnant::Context ctx(params, vars, MPI_COMM_WORLD);
+  Recorder r;
+  remnant_register_thorn_EOS(r);
+
+  r.fns.at("EOS_Startup")(ctx);  // defaults: an ideal gas
+  EXPECT_FALSE(ctx.service<remnant::eos::EOS>("eos").is_tabulated());
+
+  params.set("EOS", "type", std::string("tabulated"), {});
+  params.set("EOS", "table_file", table, {});
+  r.fns.at("EOS_Startup")(ctx);
+  const auto& e = ctx.service<remnant::eos::EOS>("eos");
+  ASSERT_TRUE(e.is_tabulated());
+  EXPECT_EQ(e.tabulated()->table().lrho.n, 39);
+
+  params.set("EOS", "table_file", std::string("/nonexistent/table.h5"), {});
+  try {
+    r.fns.at("EOS_Startup")(ctx);
+    ADD_FAILURE() << "no error for a missing table";
+  } catch (const remnant::RunError& err) {
+    EXPECT_NE(std::string(err.what()).find("/nonexistent/table.h5"), std::string::npos);
+  }
+}
