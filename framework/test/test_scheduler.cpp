@@ -236,3 +236,32 @@ schedule:
   expect_error<RunError>([&] { s.run_bin("evol", ctx); }, {"D::Sneaky changed D::v without declaring it"});
   expect_error<RunError>([&] { s.run_bin("analysis", ctx); }, {"after D::Lazy", "D::v", "are NaN"});
 }
+
+TEST(Scheduler, EveryFromParameterAndAllPseudoGroup) {
+  Harness h{R"Y(thorn: P
+parameters:
+  - {name: out_every, type: int, range: "[0:*)", default: 3, description: cadence}
+variables:
+  - {group: u, tensor: [scalar u]}
+schedule:
+  - {function: Output, in: analysis, reads: ["@all"], every: P::out_every, description: reads everything}
+  - {function: Produce, in: analysis, writes: [u], description: must run before Output}
+)Y"};
+  Scheduler s = h.make();
+  Context ctx(h.params, h.vars, MPI_COMM_WORLD);
+  for (int it = 0; it < 7; ++it) {
+    ctx.clock().iteration = it;
+    s.run_bin("analysis", ctx);
+  }
+  // Produce runs every iteration, Output only at 0, 3, 6 and always after Produce.
+  std::vector<std::string> expected;
+  for (int it = 0; it < 7; ++it) {
+    expected.push_back("P::Produce");
+    if (it % 3 == 0) expected.push_back("P::Output");
+  }
+  EXPECT_EQ(h.calls, expected);
+  h.params.set("P", "out_every", std::int64_t{0}, {});
+  h.calls.clear();
+  s.run_bin("analysis", ctx);
+  EXPECT_EQ(h.calls, std::vector<std::string>{"P::Produce"});  // 0 turns it off
+}

@@ -1,8 +1,7 @@
 #pragma once
 // Index boxes of a block (interior (0,0,0) at the origin, ghosts negative or >= n) and the
 // copy kernels between boxes and contiguous buffers. Rows in i are contiguous, so the inner loops
-// are plain copies the compiler turns into memmove-like code.
-#include <algorithm>
+// are plain contiguous copies.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -21,24 +20,56 @@ struct Box {
   }
 };
 
+// Ghost rows are short (often ng = 3 values), where a library memmove call costs more than the copy
+// itself; a plain loop compiles to a few vector moves (GCC would otherwise turn it into memmove).
+#if defined(__GNUC__) && !defined(__clang__)
+__attribute__((optimize("no-tree-loop-distribute-patterns")))
+#endif
+inline void copy_row(const double* __restrict src, int n, double* __restrict dst) {
+  for (int i = 0; i < n; ++i) dst[i] = src[i];
+}
+
 inline double* row(const Field& f, const Box& b, int j, int k) {
   return f.origin + b.lo[0] + static_cast<std::ptrdiff_t>(j) * f.sj + static_cast<std::ptrdiff_t>(k) * f.sk;
 }
+
+// Where the components of a group live in any block of the same shape, found once per
+// synchronisation instead of once per box and component.
+struct GroupLayout {
+  int group = 0;
+  int ncomp = 0;
+  std::ptrdiff_t origin = 0;       // offset of interior (0,0,0) in a component
+  std::ptrdiff_t comp_stride = 0;  // points per component
+  std::ptrdiff_t sj = 0, sk = 0;
+
+  GroupLayout(Block& b, int g, int n) : group(g), ncomp(n) {
+    const Field f = b.field(g, 0);
+    origin = f.origin - b.data(g);
+    comp_stride = static_cast<std::ptrdiff_t>(b.points_per_component(g));
+    sj = f.sj;
+    sk = f.sk;
+  }
+  Field field(Block& b, int comp) const {
+    return Field{b.data(group) + origin + comp * comp_stride, sj, sk};
+  }
+};
 
 // Copies box `from` of field `src` into box `to` (same shape) of field `dst`.
 inline void copy_box(const Field& src, const Box& from, const Field& dst, const Box& to) {
   const int nx = from.size(0), ny = from.size(1), nz = from.size(2);
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
-      std::copy_n(row(src, from, from.lo[1] + j, from.lo[2] + k), nx,
-                  row(dst, to, to.lo[1] + j, to.lo[2] + k));
+      copy_row(row(src, from, from.lo[1] + j, from.lo[2] + k), nx, row(dst, to, to.lo[1] + j, to.lo[2] + k));
 }
 
 // Appends the box of a field to a buffer; returns the position after it.
 inline double* pack_box(const Field& src, const Box& b, double* out) {
   const int nx = b.size(0);
   for (int k = b.lo[2]; k < b.hi[2]; ++k)
-    for (int j = b.lo[1]; j < b.hi[1]; ++j) out = std::copy_n(row(src, b, j, k), nx, out);
+    for (int j = b.lo[1]; j < b.hi[1]; ++j) {
+      copy_row(row(src, b, j, k), nx, out);
+      out += nx;
+    }
   return out;
 }
 
@@ -46,7 +77,7 @@ inline const double* unpack_box(const double* in, const Field& dst, const Box& b
   const int nx = b.size(0);
   for (int k = b.lo[2]; k < b.hi[2]; ++k)
     for (int j = b.lo[1]; j < b.hi[1]; ++j) {
-      std::copy_n(in, nx, row(dst, b, j, k));
+      copy_row(in, nx, row(dst, b, j, k));
       in += nx;
     }
   return in;

@@ -1,6 +1,7 @@
 #include "ghost_exchange.hpp"
 
 #include <string>
+#include <vector>
 
 #include "remnant/error.hpp"
 
@@ -41,7 +42,7 @@ int message_tag(std::int64_t receiver_gid, const Offset& from) {
 
 GhostExchange::GhostExchange(const BlockLayout& layout, std::span<Block* const> blocks, int rank,
                              MPI_Comm comm)
-    : comm_(comm) {
+    : comm_(comm), blocks_(blocks.begin(), blocks.end()) {
   int* tag_ub = nullptr;
   int flag = 0;
   MPI_Comm_get_attr(comm, MPI_TAG_UB, &tag_ub, &flag);
@@ -76,8 +77,13 @@ GhostExchange::GhostExchange(const BlockLayout& layout, std::span<Block* const> 
 }
 
 void GhostExchange::run(const VariableRegistry& vars, std::span<const int> groups) {
+  if (blocks_.empty()) return;
+  std::vector<GroupLayout> layouts;
   std::size_t ncomp = 0;
-  for (int g : groups) ncomp += static_cast<std::size_t>(vars.group(g).ncomp());
+  for (int g : groups) {
+    layouts.emplace_back(*blocks_.front(), g, vars.group(g).ncomp());
+    ncomp += static_cast<std::size_t>(layouts.back().ncomp);
+  }
   if (ncomp == 0) return;
   if (send_buffer_.size() < send_points_ * ncomp) send_buffer_.resize(send_points_ * ncomp);
   if (recv_buffer_.size() < recv_points_ * ncomp) recv_buffer_.resize(recv_points_ * ncomp);
@@ -91,22 +97,21 @@ void GhostExchange::run(const VariableRegistry& vars, std::span<const int> group
   for (const Message& m : sends_) {
     double* const start = send_buffer_.data() + m.first_point * ncomp;
     double* out = start;
-    for (int g : groups)
-      for (int c = 0; c < vars.group(g).ncomp(); ++c) out = pack_box(m.block->field(g, c), m.box, out);
+    for (const GroupLayout& gl : layouts)
+      for (int c = 0; c < gl.ncomp; ++c) out = pack_box(gl.field(*m.block, c), m.box, out);
     MPI_Isend(start, static_cast<int>(out - start), MPI_DOUBLE, m.peer, m.tag, comm_, &requests_[r++]);
   }
 
   // Local copies overlap with the messages in flight.
   for (const LocalCopy& lc : local_)
-    for (int g : groups)
-      for (int c = 0; c < vars.group(g).ncomp(); ++c)
-        copy_box(lc.src->field(g, c), lc.from, lc.dst->field(g, c), lc.to);
+    for (const GroupLayout& gl : layouts)
+      for (int c = 0; c < gl.ncomp; ++c) copy_box(gl.field(*lc.src, c), lc.from, gl.field(*lc.dst, c), lc.to);
 
   MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
   for (const Message& m : recvs_) {
     const double* in = recv_buffer_.data() + m.first_point * ncomp;
-    for (int g : groups)
-      for (int c = 0; c < vars.group(g).ncomp(); ++c) in = unpack_box(in, m.block->field(g, c), m.box);
+    for (const GroupLayout& gl : layouts)
+      for (int c = 0; c < gl.ncomp; ++c) in = unpack_box(in, gl.field(*m.block, c), m.box);
   }
 }
 

@@ -17,7 +17,7 @@ class GhostExchange {
   // `blocks` are this rank's blocks, in gid order.
   GhostExchange(const BlockLayout& layout, std::span<Block* const> blocks, int rank, MPI_Comm comm);
 
-  // All groups must be cell-centred (checked by the caller).
+  // All groups must be cell-centred (checked by the caller). Collective over the communicator.
   void run(const VariableRegistry& vars, std::span<const int> groups);
 
   std::size_t local_copies() const { return local_.size(); }
@@ -39,6 +39,7 @@ class GhostExchange {
   };
 
   MPI_Comm comm_;
+  std::vector<Block*> blocks_;  // all of one shape, as on a uniform grid or in a block forest
   std::vector<LocalCopy> local_;
   std::vector<Message> sends_, recvs_;
   std::size_t send_points_ = 0, recv_points_ = 0;
