@@ -61,6 +61,8 @@ expect describe_ranges 0 "type real; allowed: real in \(0:\*\); default: 0.4" --
 expect describe_unknown nonzero "unknown thorn 'Mol' \(did you mean MoL" -- "$exe" --describe Mol
 expect runs 0 "Run ends at iteration" -- "$exe" "$par" MoL::final_time=0.1 Flesh::out_dir="$tmp/run"
 expect resolved_parfile 0 "cfl: 0.5" -- cat "$tmp/run/parfile.resolved.yaml"
+expect walltime_limit 0 "reached MoL::max_walltime_hours" -- "$exe" "$par" MoL::final_time=-1 MoL::max_walltime_hours=1e-9 Flesh::out_dir="$tmp/wall"
+expect iteration_limit 0 "Run ends at iteration 3, .*reached MoL::max_iterations = 3" -- "$exe" "$par" MoL::max_iterations=3 Flesh::out_dir="$tmp/it"
 expect debug_mode_runs 0 "Run ends at iteration" -- "$exe" "$par" MoL::final_time=0.05 --debug Flesh::out_dir="$tmp/debug"
 
 echo "$passed passed, $failed failed"

@@ -1,0 +1,17 @@
+cmake_minimum_required(VERSION 3.20)
+# cmake -DCASE=duplicate|missing -P capability_check.cmake: the configure-time capability check must
+# fail naming the thorns (CTest matches the message).
+include(${CMAKE_CURRENT_LIST_DIR}/../../cmake/Remnant.cmake)
+set_property(GLOBAL PROPERTY REMNANT_THORNS Hydro EOS_A EOS_B)
+set_property(GLOBAL PROPERTY REMNANT_THORN_Hydro_PROVIDES "grmhd")
+set_property(GLOBAL PROPERTY REMNANT_THORN_Hydro_REQUIRES "eos")
+set_property(GLOBAL PROPERTY REMNANT_THORN_EOS_A_PROVIDES "eos")
+set_property(GLOBAL PROPERTY REMNANT_THORN_EOS_B_PROVIDES "eos")
+if(CASE STREQUAL "duplicate")
+  _remnant_check_capabilities("schedules/test.yaml" "Hydro;EOS_A;EOS_B")
+elseif(CASE STREQUAL "missing")
+  _remnant_check_capabilities("schedules/test.yaml" "Hydro")
+else()
+  _remnant_check_capabilities("schedules/test.yaml" "Hydro;EOS_A")
+  message(STATUS "capabilities consistent")
+endif()
