@@ -63,6 +63,15 @@ double Block::cell_volume() const {
   return v;
 }
 
+const char* to_string(CoordinateSystem c) {
+  switch (c) {
+    case CoordinateSystem::cartesian: return "cartesian";
+    case CoordinateSystem::cylindrical: return "cylindrical";
+    case CoordinateSystem::spherical: return "spherical";
+  }
+  return "?";
+}
+
 const char* to_string(ReductionKind k) {
   switch (k) {
     case ReductionKind::minimum: return "minimum";

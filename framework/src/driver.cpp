@@ -54,6 +54,11 @@ class CollectingRegistrar final : public ThornRegistrar {
   void grid_factory(std::function<std::unique_ptr<GridDriver>(const GridSetup&)> fn) override {
     hooks_.grid_factories[thorn_] = std::move(fn);
   }
+  void recovery(std::function<bool(Context&)> fn) override { hooks_.recovery.emplace_back(thorn_, std::move(fn)); }
+  void persistent_state(std::function<std::string(Context&)> save,
+                        std::function<void(Context&, const std::string&)> restore) override {
+    hooks_.persistent.push_back({thorn_, std::move(save), std::move(restore)});
+  }
 
  private:
   std::string thorn_;
@@ -230,6 +235,9 @@ Simulation::Simulation(const ThornCatalog& catalog, const SimulationOptions& opt
   ctx_ = std::make_unique<Context>(params_, vars_, comm_);
   ctx_->set_out_dir(params_.get<std::string>("Flesh", "out_dir"));
   ctx_->set_inverse_dt_fn([this] { return inverse_dt_limit(); });
+  ctx_->set_active_thorns(active_);
+  for (const auto& p : catalog.hooks().persistent)
+    if (std::find(active_.begin(), active_.end(), p.thorn) != active_.end()) ctx_->add_persistent_state(p);
 }
 
 Simulation::~Simulation() = default;
@@ -248,6 +256,7 @@ std::string Simulation::resolved_parfile() const {
 
 void Simulation::setup_output_and_grid() {
   const std::string resolved = resolved_parfile();
+  ctx_->set_resolved_parfile(resolved);
   // Every rank must hold the same parameters: compare a hash of the resolved parfile.
   unsigned long long h = std::hash<std::string>{}(resolved), hmin = 0, hmax = 0;
   MPI_Allreduce(&h, &hmin, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, comm_);
@@ -316,7 +325,22 @@ void Simulation::progress_line(double wall_start, std::int64_t it_start, double 
 void Simulation::run() {
   auto& s = *scheduler_;
   auto& ctx = *ctx_;
-  for (const char* bin : {"startup", "paramcheck", "initial", "postinitial", "analysis"}) s.run_bin(bin, ctx);
+  s.run_bin("startup", ctx);
+  s.run_bin("paramcheck", ctx);
+  bool recovered = false;
+  for (const auto& [thorn, fn] : catalog_.hooks().recovery)
+    if (!recovered && std::find(active_.begin(), active_.end(), thorn) != active_.end()) {
+      ctx.set_current(thorn, "recovery");
+      recovered = fn(ctx);
+    }
+  ctx.set_recovered(recovered);
+  if (recovered) {
+    // Checkpoints hold interiors only: every ghost zone is stale now.
+    s.invalidate_ghosts();
+    s.run_bin("post_recover", ctx);
+  } else {
+    for (const char* bin : {"initial", "postinitial", "analysis"}) s.run_bin(bin, ctx);
+  }
   if (!s.bin_empty("evol")) evolve();
   s.run_bin("terminate", ctx);
   ctx.set_current("Flesh", "driver");
@@ -340,6 +364,7 @@ void Simulation::evolve() {
     ctx.set_current("Flesh", "termination");
     const std::string reason = termination_reason();
     if (!reason.empty()) {
+      ctx.set_termination_reason(reason);
       if (ctx.rank() == 0 && !opts_.quiet)
         std::cout << "Run ends at iteration " << ctx.iteration() << ", t = " << ctx.time() << ": " << reason << std::endl;
       break;

@@ -24,6 +24,9 @@ class RecordingGrid final : public GridDriver {
   double min_spacing() const override { return 0.25; }
   std::string describe() const override { return "recording grid"; }
   MPI_Comm comm() const override { return MPI_COMM_WORLD; }
+  CoordinateSystem coordinates() const override { return CoordinateSystem::cartesian; }
+  std::vector<BlockKey> all_blocks() const override { return {BlockKey{}}; }
+  void restore_blocks(std::span<const BlockKey>) override {}
   std::vector<int> synced;
   Block block_;
   std::vector<Block*> blocks_;

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 #include <typeinfo>
+#include <vector>
 
 #include "remnant/error.hpp"
 #include "remnant/grid.hpp"
@@ -77,6 +78,27 @@ class Context {
   double max_inverse_dt() const { return inverse_dt_fn_ ? inverse_dt_fn_() : 0.0; }
   void set_inverse_dt_fn(std::function<double()> f) { inverse_dt_fn_ = std::move(f); }
 
+  // Why the run ends (set by the driver before the `terminate` bin), e.g. "reached MoL::final_time".
+  const std::string& termination_reason() const { return termination_reason_; }
+  void set_termination_reason(std::string r) { termination_reason_ = std::move(r); }
+  bool recovered() const { return recovered_; }
+  void set_recovered(bool r) { recovered_ = r; }
+
+  // Persistent thorn state for checkpoints: thorn name -> save/restore.
+  struct PersistentState {
+    std::string thorn;
+    std::function<std::string(Context&)> save;
+    std::function<void(Context&, const std::string&)> restore;
+  };
+  const std::vector<PersistentState>& persistent_states() const { return persistent_states_; }
+  void add_persistent_state(PersistentState s) { persistent_states_.push_back(std::move(s)); }
+  // Names of the active thorns, in activation order (provenance).
+  const std::vector<std::string>& active_thorns() const { return active_thorns_; }
+  void set_active_thorns(std::vector<std::string> t) { active_thorns_ = std::move(t); }
+  // The resolved parfile text (provenance for outputs and checkpoints).
+  const std::string& resolved_parfile() const { return resolved_parfile_; }
+  void set_resolved_parfile(std::string t) { resolved_parfile_ = std::move(t); }
+
   void info(const std::string& msg) const;   // rank 0 only
   void warn(const std::string& msg) const;   // any rank, prefixed with rank, thorn and function
 
@@ -91,6 +113,11 @@ class Context {
   std::map<std::string, std::any> services_;
   std::string current_thorn_, current_function_;
   std::function<double()> inverse_dt_fn_;
+  std::string termination_reason_;
+  bool recovered_ = false;
+  std::vector<PersistentState> persistent_states_;
+  std::vector<std::string> active_thorns_;
+  std::string resolved_parfile_;
 };
 
 }  // namespace remnant

@@ -41,6 +41,8 @@ class ThornCatalog {
     std::vector<std::pair<std::string, std::function<double(Context&)>>> inverse_dt, progress;
     std::vector<std::pair<std::string, std::function<std::string(Context&)>>> termination;
     std::map<std::string, std::function<std::unique_ptr<GridDriver>(const GridSetup&)>> grid_factories;
+    std::vector<std::pair<std::string, std::function<bool(Context&)>>> recovery;
+    std::vector<Context::PersistentState> persistent;
   };
   const Hooks& hooks() const { return hooks_; }
 

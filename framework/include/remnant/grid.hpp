@@ -56,6 +56,18 @@ class Block {
 };
 
 enum class ReductionKind { minimum, maximum, sum, volume_integral, norm1, norm2 };
+
+// The reference metric f_ij of the coordinates (DESIGN.md section 4): Cartesian (x, y, z),
+// cylindrical (R, z, phi), spherical (r, theta, phi).
+enum class CoordinateSystem { cartesian, cylindrical, spherical };
+const char* to_string(CoordinateSystem c);
+
+// Identifies a block independently of the rank that owns it (checkpoints, regrid).
+struct BlockKey {
+  int level = 0;
+  std::array<std::int64_t, 3> index{0, 0, 0};
+  bool operator==(const BlockKey&) const = default;
+};
 const char* to_string(ReductionKind k);
 
 struct GridSetup {
@@ -78,6 +90,12 @@ class GridDriver {
   // Human-readable layout (levels, blocks, cells, ranks) for --print-grid.
   virtual std::string describe() const = 0;
   virtual MPI_Comm comm() const = 0;
+  virtual CoordinateSystem coordinates() const = 0;
+  // Every block of every rank in global (gid) order: what a checkpoint must store of the mesh.
+  virtual std::vector<BlockKey> all_blocks() const = 0;
+  // Recovery: rebuild the mesh with exactly these blocks (in this gid order), distributed over the
+  // current ranks; data are zeroed. Throws RunError when the grid cannot represent them.
+  virtual void restore_blocks(std::span<const BlockKey> blocks) = 0;
 };
 
 // Calls f(i, j, k) for every interior cell of a block, i fastest.

@@ -35,6 +35,16 @@ class ThornRegistrar {
   virtual void termination_check(std::function<std::string(Context&)> fn) = 0;
   // Fraction of the run done, in [0, 1], for the ETA of the progress line (MoL knows final_time).
   virtual void progress_fraction(std::function<double(Context&)> fn) = 0;
+  // Recovery: the thorn that reads checkpoints (IO) returns true when it restored a run; the
+  // driver then skips `initial`/`postinitial` and runs `post_recover` instead.
+  virtual void recovery(std::function<bool(Context&)> fn) { (void)fn; }
+  // Thorn state beyond grid variables that a bit-identical continuation needs, saved as text in
+  // checkpoints (e.g. a counter of steps since the last metric solve).
+  virtual void persistent_state(std::function<std::string(Context&)> save,
+                                std::function<void(Context&, const std::string&)> restore) {
+    (void)save;
+    (void)restore;
+  }
   // The thorn that provides capability `grid` creates the mesh.
   virtual void grid_factory(std::function<std::unique_ptr<GridDriver>(const GridSetup&)> fn) = 0;
 };

@@ -126,4 +126,23 @@ std::string UniformGrid::describe() const {
   return out.str();
 }
 
+std::vector<BlockKey> UniformGrid::all_blocks() const {
+  std::vector<BlockKey> out;
+  for (std::int64_t gid = 0; gid < layout_->total_blocks(); ++gid) {
+    const auto& idx = layout_->index_of(gid);
+    out.push_back(BlockKey{0, {idx[0], idx[1], idx[2]}});
+  }
+  return out;
+}
+
+void UniformGrid::restore_blocks(std::span<const BlockKey> blocks) {
+  // A uniform grid has one possible layout: the checkpoint must describe the same one.
+  const auto mine = all_blocks();
+  if (blocks.size() != mine.size() || !std::equal(blocks.begin(), blocks.end(), mine.begin()))
+    throw RunError("the checkpoint's mesh (" + std::to_string(blocks.size()) + " blocks) differs from the mesh of "
+                   "the Grid parameters (" + std::to_string(mine.size()) + " blocks): recover with the same Grid settings");
+  for (Block* b : block_ptrs_)
+    for (int g = 0; g < vars_->size(); ++g) std::fill(b->data(g), b->data(g) + b->size(g), 0.0);
+}
+
 }  // namespace remnant::grid

@@ -54,6 +54,9 @@ class UniformGrid final : public GridDriver {
   double min_spacing() const override;
   std::string describe() const override;
   MPI_Comm comm() const override { return comm_; }
+  CoordinateSystem coordinates() const override { return CoordinateSystem::cartesian; }
+  std::vector<BlockKey> all_blocks() const override;
+  void restore_blocks(std::span<const BlockKey> blocks) override;
 
   const UniformGridConfig& config() const { return config_; }
   const BlockLayout& layout() const { return *layout_; }
