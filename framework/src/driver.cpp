@@ -236,6 +236,13 @@ Simulation::Simulation(const ThornCatalog& catalog, const SimulationOptions& opt
   ctx_->set_out_dir(params_.get<std::string>("Flesh", "out_dir"));
   ctx_->set_inverse_dt_fn([this] { return inverse_dt_limit(); });
   ctx_->set_active_thorns(active_);
+  ctx_->set_bin_hooks(
+      [this](const std::string& bin) {
+        const std::string thorn = ctx_->current_thorn(), fn = ctx_->current_function();
+        scheduler_->run_bin(bin, *ctx_);
+        ctx_->set_current(thorn, fn);
+      },
+      [this] { scheduler_->invalidate_ghosts(); });
   for (const auto& p : catalog.hooks().persistent)
     if (std::find(active_.begin(), active_.end(), p.thorn) != active_.end()) ctx_->add_persistent_state(p);
 }

@@ -99,6 +99,19 @@ class Context {
   const std::string& resolved_parfile() const { return resolved_parfile_; }
   void set_resolved_parfile(std::string t) { resolved_parfile_ = std::move(t); }
 
+  // For the grid thorn after a regrid: run a bin now (e.g. "post_regrid") and mark every ghost
+  // zone stale (the next reader synchronises).
+  void run_bin(const std::string& bin) {
+    if (run_bin_fn_) run_bin_fn_(bin);
+  }
+  void invalidate_ghosts() {
+    if (invalidate_fn_) invalidate_fn_();
+  }
+  void set_bin_hooks(std::function<void(const std::string&)> run, std::function<void()> invalidate) {
+    run_bin_fn_ = std::move(run);
+    invalidate_fn_ = std::move(invalidate);
+  }
+
   void info(const std::string& msg) const;   // rank 0 only
   void warn(const std::string& msg) const;   // any rank, prefixed with rank, thorn and function
 
@@ -118,6 +131,8 @@ class Context {
   std::vector<PersistentState> persistent_states_;
   std::vector<std::string> active_thorns_;
   std::string resolved_parfile_;
+  std::function<void(const std::string&)> run_bin_fn_;
+  std::function<void()> invalidate_fn_;
 };
 
 }  // namespace remnant
