@@ -13,16 +13,11 @@
 #include <set>
 #include <sstream>
 
+#include "remnant/build_info.hpp"
 #include "remnant/parfile.hpp"
 #include "remnant/registrar.hpp"
 #include "yaml_util.hpp"
 
-#ifndef REMNANT_GIT_REVISION
-#define REMNANT_GIT_REVISION "unknown"
-#endif
-#ifndef REMNANT_BUILD_TYPE
-#define REMNANT_BUILD_TYPE "unknown"
-#endif
 
 extern const char* const remnant_flesh_yaml_text;
 
@@ -252,7 +247,7 @@ Simulation::~Simulation() = default;
 std::string Simulation::resolved_parfile() const {
   std::ostringstream os;
   os << "# Resolved parameters (every default filled in), written by Remnant\n";
-  os << "# git revision: " << REMNANT_GIT_REVISION << ", build type: " << REMNANT_BUILD_TYPE << "\n";
+  os << "# git revision: " << git_revision() << ", build type: " << build_type() << "\n";
   os << "# from: " << join(parfile_files_) << "\n";
   os << "active_thorns: [" << join(active_) << "]\n";
   std::vector<std::string> with_flesh{"Flesh"};
@@ -432,7 +427,7 @@ int run_main(int argc, char** argv, const ExecutableInfo& exe) {
       MPI_Finalize();
       return 0;
     } else if (a == "--version") {
-      if (rank == 0) std::cout << exe.name << " git " << REMNANT_GIT_REVISION << " (" << REMNANT_BUILD_TYPE << ")\n";
+      if (rank == 0) std::cout << exe.name << " git " << git_revision() << " (" << build_type() << ")\n";
       MPI_Finalize();
       return 0;
     } else if (a == "--describe") {
