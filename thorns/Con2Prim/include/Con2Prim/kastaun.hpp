@@ -1,0 +1,180 @@
+#pragma once
+// Steps (ii)-(v) of the paper's recovery (Kastaun et al. 2021 adapted to tabulated EOS), for any EOS
+// type of the EOS thorn. Notation of the paper: q = tau/D, r_i = S_i/D, B^i/sqrt(D) (written Bc here),
+// chi = 1/(1 + mu Bc^2), mu = 1/(hW).
+//
+// One correction to the paper's text: its Eq. for v0 prints r^2/(h_min^2 + r^2), which is v0^2 in
+// Kastaun et al. (v0 = z0/sqrt(1 + z0^2), z0 = r/h_min); v_hat^2 is limited by that v0^2.
+#include <algorithm>
+#include <cmath>
+
+#include "Con2Prim/root_finding.hpp"
+#include "Con2Prim/root_solution.hpp"
+#include "Con2Prim/settings.hpp"
+#include "Con2Prim/state.hpp"
+#include "EOS/types.hpp"
+
+namespace remnant::con2prim {
+
+template <class E>
+class KastaunSolver {
+ public:
+  // The master function's value and the state it was computed from.
+  struct Eval {
+    double x = 0, f = 0;  // x = mu
+    double W = 1, rho0 = 0, eps = 0, T = 0;
+    std::uint32_t inv_flags = 0;
+    double rel_change(const Eval& o) const {
+      return std::max(std::abs(o.W - W) / W, std::abs(o.eps - eps) / std::abs(eps));
+    }
+    static Eval lerp(const Eval& a, const Eval& b, double t) {
+      auto mix = [t](double p, double q) { return p + t * (q - p); };
+      return {mix(a.x, b.x), 0.0, mix(a.W, b.W), mix(a.rho0, b.rho0), mix(a.eps, b.eps), mix(a.T, b.T), a.inv_flags};
+    }
+  };
+
+  KastaunSolver(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye)
+      : eos_(eos), b_(eos.bounds()), method_(s.eps_to_T), D_(c.D), ye_(ye) {
+    const double invD = 1 / c.D;
+    q_ = c.tau * invD;
+    for (int i = 0; i < 3; ++i) r_low_[i] = c.S[i] * invD;
+    r_up_ = g.raise(r_low_);
+    r2_ = dot(r_low_, r_up_);
+    const double isD = std::sqrt(invD);
+    for (int i = 0; i < 3; ++i) Bc_[i] = c.B[i] * isD;
+    Bc2_ = g.norm2_up(Bc_);
+    rB_ = dot(r_low_, Bc_);
+    rperp2_Bc2_ = std::max(0.0, r2_ * Bc2_ - rB_ * rB_);  // r_perp^2 Bc^2
+    h_min_ = b_.h_min;
+    v0sq_ = r2_ / (h_min_ * h_min_ + r2_);
+  }
+
+  // r_bar^2(mu) = r^2 chi^2 + mu chi (1 + chi) (r.Bc)^2.
+  double rbar2(double mu, double chi) const { return r2_ * chi * chi + mu * chi * (1 + chi) * rB_ * rB_; }
+
+  // Auxiliary function f_a(mu) = mu sqrt(h_min^2 + rbar^2) - 1 and its derivative; no EOS call.
+  // d(rbar^2)/dmu = -2 chi^3 r_perp^2 Bc^2, so f_a' > 0: the root mu_+ is unique.
+  void aux(double mu, double& f, double& df) const {
+    const double chi = 1 / (1 + mu * Bc2_);
+    const double s = std::sqrt(h_min_ * h_min_ + rbar2(mu, chi));
+    f = mu * s - 1;
+    df = s - mu * chi * chi * chi * rperp2_Bc2_ / s;
+  }
+
+  // Master function f(mu) = mu - 1/(max(nu_A, nu_B) + mu rbar^2), in the paper's order of steps.
+  Eval operator()(double mu) {
+    Eval e;
+    e.x = mu;
+    const double chi = 1 / (1 + mu * Bc2_);
+    const double rb2 = rbar2(mu, chi);
+    const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
+    const double v2 = std::min(mu * mu * rb2, v0sq_);
+    const double W = 1 / std::sqrt(1 - v2);
+    const double rho0 = D_ / W;
+    const double rho = std::clamp(rho0, b_.rho_min, b_.rho_max);
+    const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
+    // eps clamped to [eps_low(rho, Ye), eps_high(rho, Ye)] and T from eps, guessed from the last call.
+    const eos::Inversion inv = eos_.temperature(rho, eps0, ye_, T_guess_, method_);
+    T_guess_ = inv.T;
+    const double press = eos_.press(rho, inv.T, ye_);
+    const double a = press / (rho * (1 + inv.eps));
+    const double nuA = (1 + a) * (1 + inv.eps) / W;
+    const double nuB = (1 + a) * (1 + qbar - mu * rb2);
+    e.f = mu - 1 / (std::max(nuA, nuB) + mu * rb2);
+    e.W = W;
+    e.rho0 = rho0;
+    e.eps = inv.eps;
+    e.T = inv.T;
+    e.inv_flags = inv.flags;
+    ++evaluations_;
+    return e;
+  }
+
+  RootSolution solve(const Settings& s) {
+    RootSolution out;
+    // (iii) mu_+ by Newton on f_a in (0, 1/h_min]; f_a(1/h_min) >= 0 always.
+    const double mu_max = 1 / h_min_;
+    RootStats aux_stats;
+    const double mu_plus = newton_bracketed([&](double mu, double& f, double& df) { aux(mu, f, df); }, 0.0,
+                                            mu_max, 1e-14, 60, aux_stats);
+    out.aux_iterations = aux_stats.iterations;
+    // (iv) Brent on (0, mu_+], with a round-off margin above mu_+ (f(mu_+) >= 0 in exact arithmetic).
+    Eval hi = (*this)(std::min(mu_max, mu_plus * (1 + 1e-12)));
+    if (hi.f < 0 && hi.x < mu_max) hi = (*this)(mu_max);
+    const Eval lo = (*this)(0.0);
+    if (!(hi.f >= 0 && lo.f <= 0)) {
+      out.bracketed = out.converged = false;
+      out.evaluations = evaluations_;
+      return out;
+    }
+    Eval root, far;
+    RootStats st = brent_root(*this, lo, hi, s.tolerance, s.max_iterations, root, far);
+    if (root.inv_flags & eos::kInvBelowEpsLow) {
+      // Raising eps to eps_low(rho) (rule 8) can add a root beside the physical one where the table's
+      // cold eps grows fast with rho (LS220 above ~5e15 g/cm^3): prefer an unclamped root below it.
+      Eval root2, far2;
+      RootStats st2;
+      if (unclamped_root_below(lo, root.x, s, st2, root2, far2)) {
+        root = root2, far = far2;
+        st.converged = st2.converged;
+        st.iterations += st2.iterations;
+      }
+    }
+    if (s.secant_polish) root = secant_polish(root, far);
+    out.iterations = st.iterations;
+    out.converged = st.converged;
+    out.evaluations = evaluations_;
+    // (v) velocity from the root, v^i = mu chi (r^i + mu (r.Bc) Bc^i), at the speed of its W.
+    const double mu = root.x, chi = 1 / (1 + mu * Bc2_);
+    for (int i = 0; i < 3; ++i) out.v[i] = mu * chi * (r_up_[i] + mu * rB_ * Bc_[i]);
+    out.W = root.W;
+    out.rho = root.rho0;
+    out.eps = root.eps;
+    out.T = root.T;
+    out.inversion_flags = root.inv_flags;
+    return out;
+  }
+
+  // eps_hat_0(mu) below eps_low(rho_hat(mu), Ye), i.e. rule 8 clamps there (one EOS inversion).
+  bool clamped_low(double mu) const {
+    const double chi = 1 / (1 + mu * Bc2_);
+    const double rb2 = rbar2(mu, chi);
+    const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
+    const double v2 = std::min(mu * mu * rb2, v0sq_);
+    const double W = 1 / std::sqrt(1 - v2);
+    const double rho = std::clamp(D_ / W, b_.rho_min, b_.rho_max);
+    const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
+    return (eos_.temperature(rho, eps0, ye_, T_guess_, method_).flags & eos::kInvBelowEpsLow) != 0;
+  }
+
+  // The clamped region [mu_c, root] found by bisection on clamped_low; if f > 0 just below mu_c,
+  // the physical root lies in (0, mu_c): Brent there. False when mu = 0 is clamped too or f < 0.
+  bool unclamped_root_below(const Eval& lo, double mu_root, const Settings& s, RootStats& st, Eval& root,
+                            Eval& far) {
+    if (lo.inv_flags & eos::kInvBelowEpsLow) return false;
+    double a = lo.x, b = mu_root;
+    for (int k = 0; k < 16; ++k) {
+      const double m = 0.5 * (a + b);
+      (clamped_low(m) ? b : a) = m;
+    }
+    const Eval edge = (*this)(a);
+    if (edge.f < 0 || (edge.inv_flags & eos::kInvBelowEpsLow)) return false;
+    st = brent_root(*this, lo, edge, s.tolerance, s.max_iterations, root, far);
+    return true;
+  }
+
+  // For the rescaling of v when v_hat^2 hit v0^2 (done by the pipeline through match_speed_to_W).
+  double v0_squared() const { return v0sq_; }
+
+ private:
+  const E& eos_;
+  const eos::Bounds& b_;
+  eos::InversionMethod method_;
+  double D_, ye_;
+  double q_ = 0, r2_ = 0, Bc2_ = 0, rB_ = 0, rperp2_Bc2_ = 0, h_min_ = 1, v0sq_ = 0;
+  Vec3 r_low_{}, r_up_{}, Bc_{};
+  double T_guess_ = 0;  // none yet
+  int evaluations_ = 0;
+};
+
+}  // namespace remnant::con2prim

@@ -1,0 +1,116 @@
+#pragma once
+// Root finders of the recovery. Brent carries the whole evaluation record (not just f), so that the
+// state at the returned root is known without evaluating the master function once more; it stops on a
+// relative bracket width. Newton with a bisection safeguard solves the EOS-free auxiliary function.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace remnant::con2prim {
+
+struct RootStats {
+  int iterations = 0;
+  bool converged = false;
+};
+
+// Brent's method on [a.x, b.x] with a.f, b.f of opposite sign (or one zero). Eval has members x, f
+// and rel_change(other): the largest relative difference of the quantities the caller cares about
+// (W, eps). eval(x) returns an Eval. The x tolerance is rel_tol |b.x| divided by the sensitivity
+// of those quantities to x, estimated by the secant across the bracket, so that the stop means
+// "W, eps (and x) known to rel_tol"; it never goes below round-off. `best` receives the record of b,
+// `other` that of the far end c of the final bracket (for secant_polish).
+template <class Eval, class F>
+RootStats brent_root(F&& eval, Eval a, Eval b, double rel_tol, int max_iter, Eval& best, Eval& other) {
+  constexpr double kEps = std::numeric_limits<double>::epsilon();
+  RootStats st;
+  if (a.f == 0) return best = other = a, st.converged = true, st;
+  if (b.f == 0) return best = other = b, st.converged = true, st;
+  Eval c = a;
+  double d = b.x - a.x, e = d;
+  for (int it = 0;; ++it) {
+    if ((b.f > 0) == (c.f > 0)) {  // keep the root between b and c
+      c = a;
+      d = e = b.x - a.x;
+    }
+    if (std::abs(c.f) < std::abs(b.f)) {  // b is the best estimate
+      a = b, b = c, c = a;
+    }
+    const double dx_rel = std::abs(c.x - b.x) / std::abs(b.x);
+    const double sensitivity = dx_rel > 0 ? b.rel_change(c) / dx_rel : 0.0;
+    // A quarter: the bracket (not just the step) ends below rel_tol / 2 in every quantity.
+    const double tol = 2 * kEps * std::abs(b.x) + 0.25 * rel_tol * std::abs(b.x) / std::max(1.0, sensitivity);
+    const double m = 0.5 * (c.x - b.x);
+    if (std::abs(m) <= tol || b.f == 0) {
+      st.iterations = it;
+      st.converged = true;
+      best = b, other = c;
+      return st;
+    }
+    if (it == max_iter) {
+      st.iterations = it;
+      best = b, other = c;
+      return st;
+    }
+    if (std::abs(e) >= tol && std::abs(a.f) > std::abs(b.f)) {
+      double p, q;
+      const double s = b.f / a.f;
+      if (a.x == c.x) {  // secant
+        p = 2 * m * s;
+        q = 1 - s;
+      } else {  // inverse quadratic interpolation
+        const double qq = a.f / c.f, rr = b.f / c.f;
+        p = s * (2 * m * qq * (qq - rr) - (b.x - a.x) * (rr - 1));
+        q = (qq - 1) * (rr - 1) * (s - 1);
+      }
+      if (p > 0) q = -q;
+      else p = -p;
+      if (2 * p < std::min(3 * m * q - std::abs(tol * q), std::abs(e * q))) {
+        e = d;
+        d = p / q;
+      } else {
+        d = e = m;
+      }
+    } else {
+      d = e = m;
+    }
+    a = b;
+    b = eval(b.x + (std::abs(d) > tol ? d : (m > 0 ? tol : -tol)));
+  }
+}
+
+// The root's state without another evaluation: the secant root of the final bracket [b, c], and
+// every recorded quantity (Eval::lerp) interpolated linearly to it. Brent stops with the bracket below
+// the tolerance; the secant point's error is second order in that width, so the state is accurate to
+// round-off for the price of a few multiplications and no EOS call.
+template <class Eval>
+Eval secant_polish(const Eval& b, const Eval& c) {
+  if (b.f == 0 || c.f == b.f || (b.f > 0) == (c.f > 0)) return b;
+  const double t = std::clamp(b.f / (b.f - c.f), 0.0, 1.0);
+  return Eval::lerp(b, c, t);
+}
+
+// Newton on an increasing function with a sign change on [lo, hi] (f(lo) < 0 <= f(hi)), starting at
+// hi; a step leaving the current bracket is replaced by bisection. fdf(x, f, df) fills f and f'.
+template <class FDF>
+double newton_bracketed(FDF&& fdf, double lo, double hi, double rel_tol, int max_iter, RootStats& st) {
+  double x = hi, f, df;
+  for (int it = 1; it <= max_iter; ++it) {
+    fdf(x, f, df);
+    st.iterations = it;
+    if (f == 0) break;
+    if (f > 0) hi = x;
+    else lo = x;
+    double next = x - f / df;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const bool done = std::abs(next - x) <= rel_tol * std::abs(next);
+    x = next;
+    if (done) {
+      st.converged = true;
+      return x;
+    }
+  }
+  st.converged = f == 0;
+  return x;
+}
+
+}  // namespace remnant::con2prim

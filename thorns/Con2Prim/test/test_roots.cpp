@@ -1,0 +1,94 @@
+// The root finders and the auxiliary function of the Kastaun scheme.
+#include <cmath>
+
+#include "Con2Prim/kastaun.hpp"
+#include "Con2Prim/prim_to_cons.hpp"
+#include "Con2Prim/root_finding.hpp"
+#include "Con2Prim/state_builder.hpp"
+#include "EOS/ideal_gas.hpp"
+#include "c2p_test_util.hpp"
+
+using namespace remnant::con2prim;
+
+namespace {
+
+// A record for brent_root: a root of f(x) = x^3 - 2 with W = x^2 standing for a derived quantity.
+struct CubeEval {
+  double x = 0, f = 0, W = 0, eps = 1;
+  double rel_change(const CubeEval& o) const { return std::abs(o.W - W) / W; }
+  static CubeEval lerp(const CubeEval& a, const CubeEval& b, double t) {
+    return {a.x + t * (b.x - a.x), 0, a.W + t * (b.W - a.W), 1};
+  }
+};
+CubeEval cube(double x) { return {x, x * x * x - 2, x * x, 1}; }
+
+}  // namespace
+
+TEST(Con2PrimRoots, BrentStopsWithTheDerivedQuantityWithinTolerance) {
+  int calls = 0;
+  auto f = [&](double x) { ++calls; return cube(x); };
+  CubeEval best, other;
+  const RootStats st = brent_root(f, cube(0.0), cube(3.0), 1e-9, 100, best, other);
+  const double root = std::cbrt(2.0);
+  EXPECT_TRUE(st.converged);
+  EXPECT_EQ(st.iterations, calls);
+  EXPECT_LT(std::abs(best.x - root) / root, 1e-9);
+  EXPECT_LT(std::abs(best.W - root * root) / (root * root), 1e-9);
+  EXPECT_TRUE(best.f == 0 || (best.f > 0) != (other.f > 0));  // the final bracket straddles the root
+  // The secant polish is at least as close, and exact to round-off here.
+  const CubeEval p = secant_polish(best, other);
+  EXPECT_LE(std::abs(p.x - root), std::abs(best.x - root));
+  EXPECT_LT(std::abs(p.x - root) / root, 1e-13);
+}
+
+TEST(Con2PrimRoots, BrentReportsNonConvergence) {
+  CubeEval best, other;
+  const RootStats st = brent_root(cube, cube(0.0), cube(3.0), 1e-15, 2, best, other);
+  EXPECT_FALSE(st.converged);
+  EXPECT_EQ(st.iterations, 2);
+}
+
+TEST(Con2PrimRoots, NewtonWithBisectionSafeguard) {
+  RootStats st;
+  // atan is increasing and flat far out: plain Newton from 10 would overshoot.
+  const double x = newton_bracketed(
+      [](double y, double& f, double& df) {
+        f = std::atan(y - 1);
+        df = 1 / (1 + (y - 1) * (y - 1));
+      },
+      -5.0, 10.0, 1e-14, 100, st);
+  EXPECT_TRUE(st.converged);
+  EXPECT_NEAR(x, 1.0, 1e-13);
+}
+
+TEST(Con2PrimRoots, AuxiliaryDerivativeAndBracket) {
+  remnant::eos::IdealGas<> gas(2.0);
+  c2p_test::Randomiser R(3);
+  Settings s;
+  for (int k = 0; k < 200; ++k) {
+    const Metric3 g = R.metric();
+    const Primitives p = make_state(gas, g, R.log_uniform(1e-10, 1e-2), R.log_uniform(0.01, 100), 0.3,
+                                    R.log_uniform(1, 1e3), R.log_uniform(1e-4, 1e6), R.direction(), R.direction());
+    const Conserved c = prim_to_cons(p, g);
+    KastaunSolver<remnant::eos::IdealGas<>> ks(gas, s, g, c, 0.3);
+    for (double mu : {0.1, 0.5, 0.9}) {
+      double f, df, fp, fm, d;
+      ks.aux(mu, f, df);
+      const double h = 1e-6 * mu;
+      ks.aux(mu + h, fp, d);
+      ks.aux(mu - h, fm, d);
+      EXPECT_NEAR(df, (fp - fm) / (2 * h), 1e-6 * std::abs(df) + 1e-9);
+      EXPECT_GT(df, 0);  // f_a is increasing: its root is unique
+    }
+    // The exact root mu = 1/(hW) lies in (0, mu_+] and the master function changes sign there.
+    RootStats st;
+    const double mu_plus = newton_bracketed([&](double mu, double& f, double& df) { ks.aux(mu, f, df); }, 0.0,
+                                            1 / gas.bounds().h_min, 1e-14, 60, st);
+    const double h_true = 1 + p.eps + p.press / p.rho;
+    const double mu_true = 1 / (h_true * p.W);
+    EXPECT_LE(mu_true, mu_plus * (1 + 1e-12));
+    EXPECT_LT(ks(0.0).f, 0);
+    EXPECT_GE(ks(mu_plus * (1 + 1e-12)).f, 0);
+    EXPECT_NEAR(ks(mu_true).f, 0, 1e-10 * mu_true);
+  }
+}

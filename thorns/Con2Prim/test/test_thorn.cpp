@@ -1,0 +1,83 @@
+// The thorn binding: thorn.yaml parses, and Con2Prim_Startup publishes the settings as "con2prim".
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <remnant/context.hpp>
+#include <remnant/registrar.hpp>
+#include <remnant/thorn_spec.hpp>
+
+#include "Con2Prim/settings.hpp"
+#include "EOS/units.hpp"
+#include "c2p_test_util.hpp"
+
+void remnant_register_thorn_Con2Prim(remnant::ThornRegistrar&);
+
+namespace {
+
+// Mirrors remnant::ThornRegistrar: update when the framework adds a hook.
+struct Recorder : remnant::ThornRegistrar {
+  std::map<std::string, remnant::ScheduledFunction> fns;
+  void function(const std::string& n, remnant::ScheduledFunction f) override { fns[n] = std::move(f); }
+  void predicate(const std::string&, remnant::Predicate) override {}
+  void inverse_dt_limit(std::function<double(remnant::Context&)>) override {}
+  void termination_check(std::function<std::string(remnant::Context&)>) override {}
+  void progress_fraction(std::function<double(remnant::Context&)>) override {}
+  void grid_factory(std::function<std::unique_ptr<remnant::GridDriver>(const remnant::GridSetup&)>) override {}
+};
+
+remnant::ThornSpec spec() {
+  const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/Con2Prim/thorn.yaml";
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return remnant::parse_thorn_spec(s.str(), path);
+}
+
+}  // namespace
+
+TEST(Con2PrimThorn, ThornYamlParsesAndDeclaresStartup) {
+  const remnant::ThornSpec t = spec();
+  EXPECT_EQ(t.name, "Con2Prim");
+  ASSERT_EQ(t.provides.size(), 1u);
+  EXPECT_EQ(t.provides[0], "con2prim");
+  ASSERT_EQ(t.schedule.size(), 1u);
+  EXPECT_EQ(t.schedule[0].name, "Con2Prim_Startup");
+  EXPECT_EQ(t.schedule[0].in, "startup");
+  ASSERT_EQ(t.schedule[0].after.size(), 1u);
+  EXPECT_EQ(t.schedule[0].after[0].name, "Atmosphere_Startup");
+  Recorder r;
+  remnant_register_thorn_Con2Prim(r);
+  EXPECT_EQ(r.fns.count("Con2Prim_Startup"), 1u);
+}
+
+TEST(Con2PrimThorn, StartupPublishesTheSettings) {
+  namespace c2p = remnant::con2prim;
+  remnant::Parameters params;
+  for (auto p : spec().parameters) params.declare(p);
+  remnant::VariableRegistry vars;
+  remnant::Context ctx(params, vars, MPI_COMM_WORLD);
+  Recorder r;
+  remnant_register_thorn_Con2Prim(r);
+
+  r.fns.at("Con2Prim_Startup")(ctx);
+  const c2p::Settings& d = ctx.service<c2p::Settings>("con2prim");
+  EXPECT_EQ(d.method, c2p::Method::kastaun);
+  EXPECT_EQ(d.tolerance, 5e-9);
+  EXPECT_EQ(d.eps_to_T, remnant::eos::InversionMethod::exact);
+  EXPECT_TRUE(d.secant_polish);
+  EXPECT_DOUBLE_EQ(d.policy.rho_W_limit, 1e11 * remnant::units::rho_cgs_to_code);
+
+  params.set("Con2Prim", "method", std::string("palenzuela"), {});
+  params.set("Con2Prim", "tolerance", 1e-10, {});
+  params.set("Con2Prim", "max_iterations", std::int64_t(40), {});
+  params.set("Con2Prim", "eps_to_T", std::string("brent"), {});
+  params.set("Con2Prim", "W_max", 50.0, {});
+  r.fns.at("Con2Prim_Startup")(ctx);
+  const c2p::Settings& s = ctx.service<c2p::Settings>("con2prim");
+  EXPECT_EQ(s.method, c2p::Method::palenzuela);
+  EXPECT_EQ(s.tolerance, 1e-10);
+  EXPECT_EQ(s.max_iterations, 40);
+  EXPECT_EQ(s.eps_to_T, remnant::eos::InversionMethod::brent);
+  EXPECT_EQ(s.policy.W_max, 50.0);
+}

@@ -1,0 +1,60 @@
+#pragma once
+// The two benchmark planes of the paper (after Siegel et al. 2018): sample states, recover them,
+// measure eps_recov, iterations, EOS calls and time.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "Atmosphere/atmosphere.hpp"
+#include "Con2Prim/report.hpp"
+#include "Con2Prim/state.hpp"
+#include "EOS/counter.hpp"
+#include "EOS/tabulated.hpp"
+#include "bench_options.hpp"
+
+namespace c2p_bench {
+
+struct PlanePoint {
+  double x = 0, y = 0;  // the plane's axes (log10 values)
+  remnant::con2prim::Primitives orig;
+};
+
+struct Plane {
+  std::string name;            // "rhoT" or "Wb"
+  std::string x_name, y_name;  // TSV column names of the axes
+  std::vector<PlanePoint> points;
+};
+
+struct PointResult {
+  double eps_recov = 0;
+  int iterations = 0, evaluations = 0;
+  std::uint64_t eos_calls = 0;
+  remnant::con2prim::Status status = remnant::con2prim::Status::ok;
+};
+
+struct Summary {
+  std::size_t points = 0;
+  double mean_eps_recov = 0, max_eps_recov = 0;
+  double mean_iterations = 0, mean_evaluations = 0, mean_eos_calls = 0;
+  int max_iterations = 0;
+  std::size_t failures = 0;     // not converged, no bracket, non-finite, or atmosphere
+  std::size_t inaccurate = 0;   // converged but eps_recov > 1e-8
+  double ns_per_recovery = 0;   // NoCount EOS, averaged over the plane
+};
+
+Plane rho_T_plane(const remnant::eos::Tabulated<>& eos, const Options& o);
+Plane W_b_plane(const remnant::eos::Tabulated<>& eos, const Options& o);
+
+// eps_recov = (1/5) sum over (rho, v, eps, B, Ye) of |1 - P_recov/P_orig| (vectors: |dP|/|P|).
+double eps_recov(const remnant::con2prim::Primitives& got, const remnant::con2prim::Primitives& orig);
+
+std::vector<PointResult> run_counted(const remnant::eos::Tabulated<remnant::eos::CountCalls>& eos,
+                                     const remnant::con2prim::Settings& s, const remnant::atmosphere::Atmosphere& atm,
+                                     const Plane& plane);
+double time_ns_per_recovery(const remnant::eos::Tabulated<>& eos, const remnant::con2prim::Settings& s,
+                            const remnant::atmosphere::Atmosphere& atm, const Plane& plane, double min_seconds);
+
+Summary summarise(const std::vector<PointResult>& r);
+void write_tsv(const std::string& path, const Plane& plane, const std::vector<PointResult>& r);
+
+}  // namespace c2p_bench
