@@ -23,6 +23,7 @@ struct State {
   double wall_start = 0;
   // Copy of every evolved group at the start of the step, per local block.
   std::map<std::pair<std::int64_t, int>, std::vector<double>> u0;
+  std::vector<std::int64_t> u0_blocks;  // the local blocks u0 was made for (a regrid changes them)
 };
 
 State& state(Context& ctx) {
@@ -66,6 +67,12 @@ bool next_substep(Context& ctx) {
   auto& clock = ctx.clock();
   if (s.next_stage == 0) {
     s.t0 = clock.time;
+    std::vector<std::int64_t> blocks;
+    for (Block* b : ctx.grid().local_blocks()) blocks.push_back(b->gid);
+    if (blocks != s.u0_blocks) {
+      s.u0.clear();  // drop copies of blocks that moved away or were derefined
+      s.u0_blocks = blocks;
+    }
     for (Block* b : ctx.grid().local_blocks())
       for (int g : ctx.vars().evolved()) {
         auto& copy = s.u0[{b->gid, g}];
