@@ -130,6 +130,11 @@ function(remnant_add_executable_from_schedule sched)
     set(default_parfile ${CMAKE_MATCH_2})
     set_property(DIRECTORY ${CMAKE_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS
                  ${CMAKE_SOURCE_DIR}/${default_parfile})
+    file(READ ${CMAKE_SOURCE_DIR}/${default_parfile} default_text)
+    if(default_text MATCHES "(^|\n)include:")
+      message(FATAL_ERROR "${rel}: the default parfile ${default_parfile} is embedded in the executable and "
+                          "must not include other parfiles")
+    endif()
     _remnant_embed_text(${gen}/default_parfile.cpp remnant_default_parfile ${default_parfile})
   else()
     file(CONFIGURE OUTPUT ${gen}/default_parfile.cpp CONTENT
