@@ -1,7 +1,13 @@
 #include "tsv_output.hpp"
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <sstream>
+
+#include "centre_value.hpp"
+#include "variable_list.hpp"
 
 namespace remnant::io {
 
@@ -12,36 +18,26 @@ ReductionKind reduction_from(const std::string& name) {
     if (name == to_string(k)) return k;
   throw RunError("unknown reduction '" + name + "'");
 }
+
+void write_header(std::ostream& f, const TsvSeries& s) {
+  f << "# " << s.column << "\n# 1:iteration\t2:time\t3:value\n";
+}
 }  // namespace
 
 std::vector<TsvSeries> plan_tsv_series(const Context& ctx, const std::vector<std::string>& variables,
                                        const std::vector<std::string>& reductions) {
   std::vector<TsvSeries> out;
-  const SourceLocation& where = ctx.params().origin("IO", "tsv_variables");
-  for (const auto& v : variables) {
-    const auto dot = v.find('.');
-    const std::string group_name = v.substr(0, dot);
-    const int g = ctx.vars().find(group_name);
-    if (g < 0 || group_name.find("::") == std::string::npos) {
-      std::vector<std::string> names;
-      for (const auto& spec : ctx.vars().groups()) names.push_back(spec.full_name());
-      std::string all;
-      for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-      throw InputError(where, "IO::tsv_variables: '" + v + "' is not a variable group of an active thorn; groups: " + all);
+  for (const auto& v : resolve_variables(ctx, "tsv_variables", variables)) {
+    if (ctx.vars().group(v.group).centering != Centering::cell)
+      throw InputError(ctx.params().origin("IO", "tsv_variables"),
+                       "IO::tsv_variables: " + v.full + " is not cell-centred; reductions need cell-centred groups");
+    for (const auto& r : reductions) {
+      TsvSeries s{v.group, v.comp, ReductionKind::minimum, r == "centre", "", ""};
+      if (!s.centre) s.kind = reduction_from(r);
+      s.path = ctx.out_dir() + "/" + v.file + "." + r + ".tsv";
+      s.column = v.full + " " + r;
+      out.push_back(s);
     }
-    const auto& spec = ctx.vars().group(g);
-    for (int c = 0; c < spec.ncomp(); ++c) {
-      if (dot != std::string::npos && spec.components[static_cast<std::size_t>(c)].name != v.substr(dot + 1)) continue;
-      for (const auto& r : reductions) {
-        TsvSeries s{g, c, reduction_from(r), "", ""};
-        const std::string base = spec.thorn + "-" + spec.name + "." + spec.components[static_cast<std::size_t>(c)].name;
-        s.path = ctx.out_dir() + "/" + base + "." + r + ".tsv";
-        s.column = spec.full_name() + "." + spec.components[static_cast<std::size_t>(c)].name + " " + r;
-        out.push_back(s);
-      }
-    }
-    if (dot != std::string::npos && (out.empty() || out.back().group != g))
-      throw InputError(where, "IO::tsv_variables: group " + spec.full_name() + " has no component '" + v.substr(dot + 1) + "'");
   }
   return out;
 }
@@ -51,18 +47,65 @@ void start_tsv_files(const std::vector<TsvSeries>& series, const Context& ctx) {
   for (const auto& s : series) {
     std::ofstream f(s.path, std::ios::trunc);
     if (!f) throw RunError("cannot create " + s.path);
-    f << "# " << s.column << "\n# 1:iteration\t2:time\t3:value\n";
+    write_header(f, s);
   }
 }
 
-void append_tsv_lines(const std::vector<TsvSeries>& series, Context& ctx) {
+std::int64_t trim_tsv_file(const std::string& path, std::int64_t last) {
+  std::ifstream in(path);
+  if (!in) throw RunError("cannot read " + path);
+  std::ostringstream kept;
+  std::string line;
+  std::int64_t dropped = 0;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') {
+      kept << line << "\n";
+      continue;
+    }
+    // A row cut short by a crash has no trailing newline or fewer columns: drop it too.
+    long long it = 0;
+    const bool complete = !in.eof() && std::sscanf(line.c_str(), "%lld", &it) == 1 && line.find('\t') != std::string::npos;
+    if (complete && it <= last) kept << line << "\n";
+    else ++dropped;
+  }
+  in.close();
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    out << kept.str();
+    if (!out) throw RunError("cannot write " + tmp);
+  }
+  std::filesystem::rename(tmp, path);
+  return dropped;
+}
+
+void resume_tsv_files(const std::vector<TsvSeries>& series, const Context& ctx, std::int64_t iteration) {
+  if (ctx.rank() != 0) return;
+  std::int64_t dropped = 0;
   for (const auto& s : series) {
-    const double v = ctx.grid().reduce(s.group, s.comp, s.kind);
+    if (!std::filesystem::exists(s.path)) {
+      std::ofstream f(s.path);
+      if (!f) throw RunError("cannot create " + s.path);
+      write_header(f, s);
+      continue;
+    }
+    dropped += trim_tsv_file(s.path, iteration);
+  }
+  if (dropped > 0)
+    ctx.info("dropped " + std::to_string(dropped) + " TSV rows after the recovered iteration " + std::to_string(iteration));
+}
+
+void append_tsv_lines(std::vector<TsvSeries>& series, Context& ctx, const std::array<double, 3>& centre) {
+  for (auto& s : series) {
+    const double v = s.centre ? value_at_point(ctx.grid(), s.group, s.comp, centre) : ctx.grid().reduce(s.group, s.comp, s.kind);
     if (ctx.rank() != 0) continue;
+    if (std::isnan(v) && s.nan_rows++ == 0)
+      ctx.warn(s.path + ": NaN at iteration " + std::to_string(ctx.iteration()) +
+               " (further NaN rows of this file are counted and reported at the end)");
     std::FILE* f = std::fopen(s.path.c_str(), "a");
     if (!f) throw RunError("cannot append to " + s.path);
     std::fprintf(f, "%lld\t%.17g\t%.17g\n", static_cast<long long>(ctx.iteration()), ctx.time(), v);
-    std::fclose(f);
+    if (std::fclose(f) != 0) throw RunError("cannot write " + s.path + " (disk full?)");
   }
 }
 

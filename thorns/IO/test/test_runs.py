@@ -1,0 +1,258 @@
+#!/usr/bin/python3
+"""Whole runs of the remnant executable that test IO (CTest label IO):
+
+  restart_np1 / restart_np2   N+M iterations straight vs N, then recover for M: TSV bit-identical
+  restart_1to2 / restart_2to1 the same, recovering on another rank count: within 1e-14 relative
+  kill       SIGKILL in the middle of writing a checkpoint (IO::test_kill_at_checkpoint); the
+             previous checkpoint is used by IO::recover = auto and the continuation is bit-identical
+  corrupt    a flipped byte in the data of the newest checkpoint: reported, the previous one used
+  truncate   the newest checkpoint cut in half: reported, the previous one used
+  walltime   a run ended by MoL::max_walltime_hours leaves a final checkpoint that continues exactly
+  params     recovering with a changed steerable: never parameter is an error naming it
+  grid_output  HDF5 volume/slices/lines on 1 and 2 ranks: utils/check_xdmf, h5py consistency
+  plots      utils/plot_timeseries and utils/plot_slice make PNG files
+"""
+import argparse
+import glob
+import os
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+BASE = ["Grid::ncells=[16,16,16]", "Grid::block_size=[8,8,8]", "MoL::final_time=-1",
+        "Grid::boundary_lower=[periodic,periodic,reflect]", "Grid::boundary_upper=[periodic,periodic,outflow]",
+        "WaveToy::initial_data=gaussian", "WaveToy::gaussian_center=[0.5,0.5,0.3]",
+        "IO::tsv_every=1", "IO::tsv_variables=[WaveToy::wave]",
+        "IO::tsv_reductions=[minimum,maximum,sum,volume_integral,norm1,norm2,centre]",
+        "IO::centre=[0.5,0.5,0.5]", "Flesh::timers=false"]
+
+
+class Runner:
+    def __init__(self, a):
+        self.a = a
+        self.parfile = os.path.join(a.source_dir, "parfiles", "wavetoy_3d.yaml")
+
+    def run(self, name, np_, args, expect_ok=True):
+        out = os.path.join(self.a.work, name)
+        cmd = [self.a.mpirun, "-np", str(np_), "--oversubscribe", self.a.exe, self.parfile,
+               "Flesh::out_dir=" + out] + BASE + args
+        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        with open(os.path.join(self.a.work, name + ".log"), "a") as f:
+            f.write(" ".join(cmd) + "\n" + p.stdout)
+        if expect_ok and p.returncode != 0:
+            sys.exit("run %s failed (rc %d):\n%s" % (name, p.returncode, p.stdout[-4000:]))
+        return out, p
+
+
+def tsv_files(d):
+    return sorted(os.path.basename(p) for p in glob.glob(os.path.join(d, "*.tsv")))
+
+
+def compare_tsv(a, b, rel):
+    names = tsv_files(a)
+    assert names and names == tsv_files(b), "different TSV files: %s vs %s" % (names, tsv_files(b))
+    worst = 0.0
+    for n in names:
+        ta, tb = open(os.path.join(a, n)).read(), open(os.path.join(b, n)).read()
+        if rel == 0:
+            assert ta == tb, "%s differs between %s and %s" % (n, a, b)
+            continue
+        la = [l for l in ta.splitlines() if not l.startswith("#")]
+        lb = [l for l in tb.splitlines() if not l.startswith("#")]
+        assert len(la) == len(lb), "%s: %d vs %d rows" % (n, len(la), len(lb))
+        for x, y in zip(la, lb):
+            xa, ya = x.split("\t"), y.split("\t")
+            assert xa[0] == ya[0], "%s: iterations differ: %s vs %s" % (n, x, y)
+            for u, v in zip(xa[1:], ya[1:]):
+                u, v = float(u), float(v)
+                d = abs(u - v) / max(abs(u), abs(v), 1e-300) if u != v else 0.0
+                worst = max(worst, d)
+                assert d <= rel, "%s: %r vs %r (relative %g > %g)" % (n, u, v, d, rel)
+    return len(names), worst
+
+
+def straight_and_first(r, np_first, n_total, n_first, extra_first):
+    straight, _ = r.run("straight", np_first, ["MoL::max_iterations=%d" % n_total])
+    first, _ = r.run("restarted", np_first, ["MoL::max_iterations=%d" % n_first] + extra_first, expect_ok=False)
+    return straight, first
+
+
+def mode_restart(r, np1, np2):
+    # The first run checkpoints at 6 and 12 and goes on to 15: rows 13-15 must be dropped.
+    straight, first = straight_and_first(r, np1, 20, 15, ["IO::checkpoint_every=6"])
+    _, p = r.run("restarted", np2, ["MoL::max_iterations=20", "IO::recover=auto"])
+    assert "recovered from" in p.stdout and "it0000000012" in p.stdout, p.stdout
+    rel = 0.0 if np1 == np2 else 1e-14
+    n, worst = compare_tsv(straight, first, rel)
+    print("restart %d -> %d ranks: %d TSV files agree (worst relative difference %g)" % (np1, np2, n, worst))
+
+
+def checkpoint_dir(d):
+    return os.path.join(d, "checkpoints")
+
+
+def mode_kill(r):
+    straight, _ = r.run("straight", 2, ["MoL::max_iterations=20"])
+    out, p = r.run("restarted", 2, ["MoL::max_iterations=20", "IO::checkpoint_every=4", "IO::checkpoint_keep=5",
+                                    "IO::test_kill_at_checkpoint=12"], expect_ok=False)
+    assert p.returncode != 0, "the run was not killed"
+    ck = sorted(os.listdir(checkpoint_dir(out)))
+    assert "checkpoint.it0000000012.h5.tmp" in ck, ck
+    assert "checkpoint.it0000000012.h5" not in ck, ck
+    assert "checkpoint.it0000000008.h5" in ck, ck
+    _, p = r.run("restarted", 2, ["MoL::max_iterations=20", "IO::recover=auto", "IO::checkpoint_every=4"])
+    assert "recovered from" in p.stdout and "it0000000008.h5 at iteration 8" in p.stdout, p.stdout
+    n, _ = compare_tsv(straight, out, 0.0)
+    print("killed while writing checkpoint 12 (left %s); recovered from 8; %d TSV files bit-identical" % (ck, n))
+
+
+def damage_and_recover(r, how):
+    straight, _ = r.run("straight", 1, ["MoL::max_iterations=16"])
+    out, _ = r.run("restarted", 1, ["MoL::max_iterations=12", "IO::checkpoint_every=4", "IO::checkpoint_keep=3"])
+    newest = os.path.join(checkpoint_dir(out), "checkpoint.it0000000012.h5")
+    if how == "corrupt":
+        import h5py
+        with h5py.File(newest, "r") as f:
+            ds = f["groups/WaveToy::wave"]
+            offset = ds.id.get_offset() + ds.id.get_storage_size() // 2
+        with open(newest, "r+b") as f:
+            f.seek(offset)
+            b = f.read(1)
+            f.seek(offset)
+            f.write(bytes([b[0] ^ 0x10]))
+        expect = "does not match its checksum"
+    else:
+        size = os.path.getsize(newest)
+        with open(newest, "r+b") as f:
+            f.truncate(size // 2)
+        expect = "unusable"
+    _, p = r.run("restarted", 2, ["MoL::max_iterations=16", "IO::recover=auto"])
+    assert "checkpoint.it0000000012.h5 is unusable" in p.stdout and expect in p.stdout, p.stdout
+    assert "recovered from" in p.stdout and "it0000000008.h5 at iteration 8" in p.stdout, p.stdout
+    n, worst = compare_tsv(straight, out, 1e-14)
+    msg = [l for l in p.stdout.splitlines() if "unusable" in l][0]
+    print("%s: reported as '%s'; recovered from 8 on 2 ranks; %d TSV files agree (worst %g)" % (how, msg.strip(), n, worst))
+
+
+def mode_walltime(r):
+    out, p = r.run("restarted", 1, ["MoL::max_iterations=100000", "MoL::max_walltime_hours=2e-6"])
+    assert "max_walltime_hours" in p.stdout, p.stdout
+    ck = sorted(glob.glob(os.path.join(checkpoint_dir(out), "checkpoint.it*.h5")))
+    assert ck, "no final checkpoint after the wall-clock limit"
+    last = int(os.path.basename(ck[-1])[13:23])
+    rows = [l for l in open(os.path.join(out, "WaveToy-wave.u.norm2.tsv")) if not l.startswith("#")]
+    assert int(rows[-1].split("\t")[0]) == last, "the final checkpoint is not at the last iteration"
+    straight, _ = r.run("straight", 1, ["MoL::max_iterations=%d" % (last + 5)])
+    r.run("restarted", 1, ["MoL::max_iterations=%d" % (last + 5), "IO::recover=auto"])
+    n, _ = compare_tsv(straight, out, 0.0)
+    print("wall-clock limit ended the run at iteration %d with a checkpoint; continuation bit-identical (%d files)" % (last, n))
+
+
+def mode_params(r):
+    out, _ = r.run("restarted", 1, ["MoL::max_iterations=4", "IO::checkpoint_every=4"])
+    _, p = r.run("restarted", 1, ["MoL::max_iterations=8", "IO::recover=auto", "Grid::ncells=[16,16,32]"], expect_ok=False)
+    assert p.returncode != 0 and "steerable: never" in p.stdout and "Grid::ncells" in p.stdout, p.stdout
+    _, p = r.run("restarted", 1, ["MoL::max_iterations=8", "IO::recover=auto", "MoL::cfl=0.3"])
+    assert "MoL::cfl" in p.stdout and "recovered from" in p.stdout, p.stdout
+    _, p = r.run("restarted", 1, ["MoL::max_iterations=10", "IO::recover=" + os.path.join(out, "nonexistent.h5")],
+                 expect_ok=False)
+    assert p.returncode != 0 and "no checkpoint file" in p.stdout, p.stdout
+    print("a changed Grid::ncells stops the recovery naming it; MoL::cfl (steerable: recover) may change")
+
+
+def mode_grid_output(r):
+    import h5py
+    args = ["MoL::max_iterations=10", "IO::hdf5_every=5", "IO::hdf5_variables=[WaveToy::wave]",
+            "IO::hdf5_output=[volume,slice_xy,slice_xz,slice_yz,line_x,line_y,line_z]", "IO::slice_point=[0.3,0.6,0.1]"]
+    outs = {}
+    for np_ in (1, 2):
+        out, _ = r.run("np%d" % np_, np_, args)
+        outs[np_] = out
+        xmfs = sorted(glob.glob(os.path.join(out, "*.xmf")))
+        assert len(xmfs) == 4 * 3 + 4, xmfs
+        rc = subprocess.run([sys.executable, os.path.join(r.a.source_dir, "utils", "check_xdmf")] + xmfs)
+        assert rc.returncode == 0, "check_xdmf failed"
+    for it in (0, 5, 10):
+        name = "grid-volume.it%08d.h5" % it
+        with h5py.File(os.path.join(outs[1], name)) as f1, h5py.File(os.path.join(outs[2], name)) as f2:
+            for k in ("data/WaveToy-wave.u", "data/WaveToy-wave.rho", "coords/x", "blocks/index"):
+                assert np.array_equal(f1[k][:], f2[k][:]), "%s %s differs between 1 and 2 ranks" % (name, k)
+            for k in ("provenance/parfile", "provenance/thorns"):
+                assert len(f1[k][()]) > 0
+            assert f1.attrs["git_revision"] and f1.attrs["build_type"] is not None
+            assert f1["data/WaveToy-wave.u"].attrs["nan_count"] == 0
+            # Volume as one 16^3 array [z][y][x] from its 8 blocks.
+            u = np.full((16, 16, 16), np.nan)
+            for b, (i, j, k) in enumerate(f1["blocks/index"][:]):
+                u[8 * k:8 * k + 8, 8 * j:8 * j + 8, 8 * i:8 * i + 8] = f1["data/WaveToy-wave.u"][b]
+            assert not np.isnan(u).any()
+        # x = 0.3 -> cell 4, y = 0.6 -> cell 9, z = 0.1 -> cell 1 (16 cells on [0, 1]).
+        with h5py.File(os.path.join(outs[2], "grid-slice_xy.it%08d.h5" % it)) as f:
+            s = np.full((16, 16), np.nan)
+            for b, (i, j, _) in enumerate(f["blocks/index"][:]):
+                s[8 * j:8 * j + 8, 8 * i:8 * i + 8] = f["data/WaveToy-wave.u"][b]
+            assert np.array_equal(s, u[1]), "slice_xy is not the z = 0.1 plane of the volume"
+            assert abs(f["blocks/fixed"][0][2] - 1.5 / 16) < 1e-15
+        with h5py.File(os.path.join(outs[2], "grid-line_y.it%08d.h5" % it)) as f:
+            order = np.argsort(f["coords/y"][:, 0])
+            line = np.concatenate([f["data/WaveToy-wave.u"][b] for b in order])
+            assert np.array_equal(line, u[1, :, 4]), "line_y is not the row x = 0.3, z = 0.1 of the volume"
+    # Output by simulation time: one file whenever t crosses a multiple of 0.05.
+    out, p = r.run("by_time", 1, ["MoL::max_iterations=12", "IO::hdf5_every_time=0.05",
+                                  "IO::hdf5_variables=[WaveToy::wave.u]", "IO::hdf5_output=[volume]"])
+    its = sorted(int(os.path.basename(x).split(".it")[1][:8]) for x in glob.glob(os.path.join(out, "grid-volume.it*.h5")))
+    times = {}
+    for l in open(os.path.join(out, "WaveToy-wave.u.norm2.tsv")):
+        if not l.startswith("#"):
+            t = l.split("\t")
+            times[int(t[0])] = float(t[1])
+    want = [0] + [i for i in range(1, 13) if int(times[i] / 0.05 + 1e-9) > int(times[i - 1] / 0.05 + 1e-9)]
+    assert its == want, "outputs at %s, expected %s" % (its, want)
+    print("grid output: %d XDMF files valid on 1 and 2 ranks; volume identical; slices and lines match the volume;"
+          " time-based output at iterations %s" % (len(xmfs), its))
+
+
+def mode_plots(r):
+    out, _ = r.run("np2", 2, ["MoL::max_iterations=6", "IO::hdf5_every=6", "IO::hdf5_variables=[WaveToy::wave]",
+                              "IO::hdf5_output=[volume,slice_xy,line_x]"])
+    py = sys.executable
+    u = os.path.join(r.a.source_dir, "utils")
+    png = os.path.join(r.a.work, "ts.png")
+    subprocess.run([py, os.path.join(u, "plot_timeseries"), "-o", png,
+                    os.path.join(out, "WaveToy-wave.u.norm2.tsv"), os.path.join(out, "WaveToy-wave.u.maximum.tsv")], check=True)
+    assert os.path.getsize(png) > 1000
+    for f, var in (("grid-slice_xy.it00000006.h5", "WaveToy-wave.u"), ("grid-line_x.it00000006.h5", "WaveToy-wave.rho"),
+                   ("grid-volume.it00000006.h5", "WaveToy-wave.u")):
+        png = os.path.join(r.a.work, f + ".png")
+        subprocess.run([py, os.path.join(u, "plot_slice"), os.path.join(out, f), "--var", var, "-o", png], check=True)
+        assert os.path.getsize(png) > 1000, png
+    print("plot_timeseries and plot_slice wrote PNG files")
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--mode", required=True)
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--mpirun", default="mpirun")
+    ap.add_argument("--source-dir", required=True)
+    ap.add_argument("--work", required=True)
+    a = ap.parse_args()
+    shutil.rmtree(a.work, ignore_errors=True)
+    os.makedirs(a.work)
+    r = Runner(a)
+    modes = {
+        "restart_np1": lambda: mode_restart(r, 1, 1), "restart_np2": lambda: mode_restart(r, 2, 2),
+        "restart_1to2": lambda: mode_restart(r, 1, 2), "restart_2to1": lambda: mode_restart(r, 2, 1),
+        "kill": lambda: mode_kill(r), "corrupt": lambda: damage_and_recover(r, "corrupt"),
+        "truncate": lambda: damage_and_recover(r, "truncate"), "walltime": lambda: mode_walltime(r),
+        "params": lambda: mode_params(r), "grid_output": lambda: mode_grid_output(r), "plots": lambda: mode_plots(r),
+    }
+    if a.mode not in modes:
+        sys.exit("unknown mode %s; modes: %s" % (a.mode, ", ".join(modes)))
+    modes[a.mode]()
+
+
+if __name__ == "__main__":
+    main()
