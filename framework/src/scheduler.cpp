@@ -153,13 +153,25 @@ std::vector<ScheduleNode> Scheduler::build_container(const std::string& containe
     for (const auto& r : items[i]->after) ordering(i, r, false);
   }
   // Writer before reader, unless both read and modify the group (then only explicit ordering).
-  // An explicit before/after between two items overrides what their accesses imply.
-  std::set<std::pair<std::size_t, std::size_t>> explicit_pairs;
-  for (std::size_t u = 0; u < n; ++u)
-    for (const auto& [v, why] : out[u]) explicit_pairs.insert({std::min(u, v), std::max(u, v)});
+  // Explicit before/after wins over what the accesses imply, also through chains: in a repeated
+  // group (MoL's substeps) "PostStep writes prim, CalcRHS reads it" is carried to the next pass, and
+  // CalcRHS -> Update -> PostStep is the declared order.
+  std::vector<std::vector<bool>> explicit_reach(n, std::vector<bool>(n, false));
+  for (std::size_t u = 0; u < n; ++u) {
+    std::vector<std::size_t> stack{u};
+    while (!stack.empty()) {
+      const std::size_t w = stack.back();
+      stack.pop_back();
+      for (const auto& [v, why] : out[w])
+        if (!explicit_reach[u][v]) {
+          explicit_reach[u][v] = true;
+          stack.push_back(v);
+        }
+    }
+  }
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t j = 0; j < n; ++j) {
-      if (i == j || explicit_pairs.count({std::min(i, j), std::max(i, j)})) continue;
+      if (i == j || explicit_reach[i][j] || explicit_reach[j][i]) continue;
       for (int g : acc[i].writes) {
         if (!acc[j].reads.count(g)) continue;
         const bool both_modify = acc[i].reads.count(g) && acc[j].writes.count(g);

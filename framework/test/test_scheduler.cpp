@@ -268,3 +268,22 @@ schedule:
   s.run_bin("analysis", ctx);
   EXPECT_EQ(h.calls, std::vector<std::string>{"P::Produce"});  // 0 turns it off
 }
+
+TEST(Scheduler, ExplicitChainOverridesLoopCarriedDataEdge) {
+  // MoL-like substep: CalcRHS reads prim, PostStep writes it for the next pass; the declared chain
+  // CalcRHS -> Update -> PostStep must win over the implied PostStep -> CalcRHS edge.
+  Harness h{R"Y(thorn: L
+variables:
+  - {group: cons, tensor: [scalar D], role: evolved, rhs: rhs}
+  - {group: rhs, tensor: [scalar D]}
+  - {group: prim, tensor: [scalar rho]}
+schedule:
+  - {function: CalcRHS, in: evol, reads: [prim], writes: [rhs], description: rhs from prim}
+  - {function: Update, in: evol, after: [CalcRHS], reads: [cons, rhs], writes: [cons], description: update}
+  - {function: PostStep, in: evol, after: [Update], reads: [cons], writes: [prim], description: con2prim}
+)Y"};
+  Scheduler s = h.make();
+  Context ctx(h.params, h.vars, MPI_COMM_WORLD);
+  s.run_bin("evol", ctx);
+  EXPECT_EQ(h.calls, (std::vector<std::string>{"L::CalcRHS", "L::Update", "L::PostStep"}));
+}
