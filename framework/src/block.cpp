@@ -1,5 +1,7 @@
 // Storage of one mesh block: per variable group, ncomp contiguous arrays (component-major), each
 // with ghost zones on both sides, i fastest.
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -28,6 +30,59 @@ Block::Block(std::int64_t gid_, int level_, std::array<std::int64_t, 3> index_,
     points_.push_back(points);
     data_.emplace_back(points * static_cast<std::size_t>(group.ncomp()), 0.0);
   }
+  std::array<double, 3> domain_lo{};
+  for (std::size_t d = 0; d < 3; ++d) domain_lo[d] = lo[d] - static_cast<double>(index[d] * n[d]) * dx[d];
+  set_geometry(CoordinateSystem::cartesian, domain_lo);
+}
+
+void Block::set_geometry(CoordinateSystem c, const std::array<double, 3>& domain_lo) {
+  coordinates = c;
+  for (int d = 0; d < 3; ++d) {
+    const auto ud = static_cast<std::size_t>(d);
+    DirectionGeometry& g = geo_[ud];
+    const int cells = n[ud] + 2 * ng[ud];
+    g.face.resize(static_cast<std::size_t>(cells + 1));
+    g.centroid.resize(static_cast<std::size_t>(cells + 1));
+    g.weight.resize(static_cast<std::size_t>(cells + 1));
+    g.face_factor.resize(static_cast<std::size_t>(cells + 1));
+    const bool used = direction_used(n, ng, d);
+    const std::int64_t first = index[ud] * n[ud] - ng[ud];
+    for (int p = 0; p <= cells; ++p) {
+      // The lower domain face is domain_lo exactly; the upper face of an unused direction is lo + dx.
+      const std::int64_t global = first + p;
+      g.face[static_cast<std::size_t>(p)] =
+          global == 0 ? domain_lo[ud] : domain_lo[ud] + static_cast<double>(global) * dx[ud];
+    }
+    for (int p = 0; p <= cells; ++p) {
+      const double a = g.face[static_cast<std::size_t>(p)];
+      const double b = p < cells ? g.face[static_cast<std::size_t>(p + 1)] : a + dx[ud];
+      double factor = coords::volume_factor(c, d, a);
+      // Axes and the origin have exactly zero area (sin(pi) is not 0 in floating point).
+      if (coords::is_angle(c, d) && d == 1 && std::abs(a - std::numbers::pi) < 1e-12) factor = 0.0;
+      g.face_factor[static_cast<std::size_t>(p)] = factor;
+      g.centroid[static_cast<std::size_t>(p)] = coords::centroid(c, d, a, b);
+      // Constant factors (Cartesian directions, z, phi) weigh every cell by exactly dx.
+      const bool constant_factor = coords::volume_factor(c, d, 0.3) == 1.0 && coords::volume_factor(c, d, 0.7) == 1.0;
+      double w = 1.0;
+      if (used || coords::is_angle(c, d)) w = constant_factor ? dx[ud] : coords::volume_factor_integral(c, d, a, b);
+      g.weight[static_cast<std::size_t>(p)] = w;
+    }
+  }
+}
+
+double Block::face_area(int d, int i, int j, int k) const {
+  const int idx[3] = {i, j, k};
+  double a = 1.0;
+  for (int e = 0; e < 3; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    const auto p = static_cast<std::size_t>(idx[e] + ng[ue]);
+    a *= e == d ? geo_[ue].face_factor[p] : geo_[ue].weight[p];
+  }
+  return a;
+}
+
+double Block::sqrt_f(int i, int j, int k) const {
+  return coords::sqrt_det_metric(coordinates, {centroid(0, i), centroid(1, j), centroid(2, k)});
 }
 
 std::array<int, 3> Block::extent(Centering c) const {
@@ -61,15 +116,6 @@ double Block::cell_volume() const {
   for (int d = 0; d < 3; ++d)
     if (direction_used(n, ng, d)) v *= dx[static_cast<std::size_t>(d)];
   return v;
-}
-
-const char* to_string(CoordinateSystem c) {
-  switch (c) {
-    case CoordinateSystem::cartesian: return "cartesian";
-    case CoordinateSystem::cylindrical: return "cylindrical";
-    case CoordinateSystem::spherical: return "spherical";
-  }
-  return "?";
 }
 
 const char* to_string(ReductionKind k) {

@@ -7,10 +7,13 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "remnant/coordinates.hpp"
 #include "remnant/variables.hpp"
 
 namespace remnant {
@@ -47,20 +50,50 @@ class Block {
   double* data(int group) { return data_[static_cast<std::size_t>(group)].data(); }
   std::size_t size(int group) const { return data_[static_cast<std::size_t>(group)].size(); }
   std::size_t points_per_component(int group) const { return points_[static_cast<std::size_t>(group)]; }
-  double cell_volume() const;  // Cartesian for now; the Grid issue adds sqrt(f)
+  // Coordinate volume dx*dy*dz of the used directions: the cell volume of a Cartesian block.
+  double cell_volume() const;
+
+  // Geometry (exact integrals of sqrt(f), see remnant/coordinates.hpp). Cells (i, j, k) from -ng
+  // to n+ng-1, faces from -ng to n+ng; the arrays are precomputed per direction, so these are
+  // a few loads and multiplications.
+  CoordinateSystem coordinates = CoordinateSystem::cartesian;
+  // Lower face coordinate of cell i in direction d.
+  double face_coordinate(int d, int i) const { return geo_[d].face[static_cast<std::size_t>(i + ng[d])]; }
+  // The sqrt(f)-weighted centroid coordinate of cell i in direction d.
+  double centroid(int d, int i) const { return geo_[d].centroid[static_cast<std::size_t>(i + ng[d])]; }
+  // The integral of g_d over cell i in direction d (the 1D factor of the cell volume).
+  double volume_weight(int d, int i) const { return geo_[d].weight[static_cast<std::size_t>(i + ng[d])]; }
+  // g_d at the lower face i (the 1D factor of the face area normal to d).
+  double face_factor(int d, int i) const { return geo_[d].face_factor[static_cast<std::size_t>(i + ng[d])]; }
+  // Pointers to the per-direction arrays at index 0, valid from -ng on, for hot loops.
+  const double* volume_weights(int d) const { return geo_[d].weight.data() + ng[d]; }
+  const double* face_factors(int d) const { return geo_[d].face_factor.data() + ng[d]; }
+  const double* centroids(int d) const { return geo_[d].centroid.data() + ng[d]; }
+  // Exact volume of cell (i, j, k): the integral of sqrt(f) over it.
+  double cell_volume(int i, int j, int k) const {
+    return geo_[0].weight[static_cast<std::size_t>(i + ng[0])] * geo_[1].weight[static_cast<std::size_t>(j + ng[1])] *
+           geo_[2].weight[static_cast<std::size_t>(k + ng[2])];
+  }
+  // Exact area (integral of sqrt(f) over the face) of the lower face of cell (i, j, k) normal to d.
+  double face_area(int d, int i, int j, int k) const;
+  // sqrt(f) at the centroid of cell (i, j, k).
+  double sqrt_f(int i, int j, int k) const;
+  // Recomputes the geometry: faces at domain_lo[d] + (index[d] * n[d] + i) * dx[d], so that
+  // neighbouring blocks (at any level) compute bit-identical shared faces. Unused angular
+  // directions span their whole range, unused other directions have unit weight.
+  void set_geometry(CoordinateSystem c, const std::array<double, 3>& domain_lo);
 
  private:
+  struct DirectionGeometry {
+    std::vector<double> face, centroid, weight, face_factor;
+  };
+  std::array<DirectionGeometry, 3> geo_;
   const VariableRegistry* vars_;
   std::vector<std::vector<double>> data_;   // per group: ncomp * points, component-major
   std::vector<std::size_t> points_;
 };
 
 enum class ReductionKind { minimum, maximum, sum, volume_integral, norm1, norm2 };
-
-// The reference metric f_ij of the coordinates (DESIGN.md section 4): Cartesian (x, y, z),
-// cylindrical (R, z, phi), spherical (r, theta, phi).
-enum class CoordinateSystem { cartesian, cylindrical, spherical };
-const char* to_string(CoordinateSystem c);
 
 // Identifies a block independently of the rank that owns it (checkpoints, regrid).
 struct BlockKey {
@@ -96,6 +129,23 @@ class GridDriver {
   // Recovery: rebuild the mesh with exactly these blocks (in this gid order), distributed over the
   // current ranks; data are zeroed. Throws RunError when the grid cannot represent them.
   virtual void restore_blocks(std::span<const BlockKey> blocks) = 0;
+
+  // Refluxing. `face_groups` hold flux densities (per unit face area, i.e. per unit of the
+  // integral of sqrt(f) over the face) on the faces of the interior, one face-centred group per
+  // direction (face_x, face_y, face_z). Where a face is shared with finer blocks, its value is
+  // replaced by the area-weighted mean of the fine faces, so that the fluxes through the two sides
+  // of a coarse-fine interface agree and conservation holds to round-off. Collective.
+  virtual void correct_fluxes(std::span<const int> face_groups) { (void)face_groups; }
+
+  // Adaptive refinement: a criterion returns, for one local block whose ghosts of the variables it
+  // reads the thorn has synchronised, +1 (refine), 0 (keep) or -1 (may coarsen; a family of
+  // 2^d blocks coarsens only when all agree). Evaluated at every regrid; several criteria combine
+  // by the maximum. Throws RunError on a grid without refinement.
+  using RefinementCriterion = std::function<int(Block&)>;
+  virtual void add_refinement_criterion(const std::string& name, RefinementCriterion fn) {
+    (void)fn;
+    throw std::runtime_error("this grid has no refinement; cannot add criterion '" + name + "'");
+  }
 };
 
 // Calls f(i, j, k) for every interior cell of a block, i fastest.

@@ -1,9 +1,10 @@
 #pragma once
-// Turning Grid parameters into a UniformGridConfig and checking it.
+// Turning Grid parameters into a GridConfig and checking it: every bad layout is an InputError
+// naming the parameter (and, from a parfile, its file:line:col).
 #include <functional>
 #include <string>
 
-#include "Grid/uniform_grid.hpp"
+#include "Grid/grid_config.hpp"
 #include "remnant/error.hpp"
 
 namespace remnant {
@@ -17,12 +18,14 @@ namespace remnant::grid {
 using SettingLocator = std::function<SourceLocation(const std::string& name)>;
 
 Boundary parse_boundary(const std::string& keyword, const SourceLocation& where);
+CoordinateSystem parse_coordinates(const std::string& keyword, const SourceLocation& where);
 
 // Throws InputError naming the offending setting(s). Returns the config with the entries beyond
-// `dimension` normalised (one cell, one block, outflow) so that later code never looks at them.
-UniformGridConfig checked(UniformGridConfig config, const SettingLocator& where);
-UniformGridConfig checked(const UniformGridConfig& config);
+// `dimension` normalised (one cell, one block, outflow, full angular range) so that later code
+// never looks at them.
+GridConfig checked(GridConfig config, const SettingLocator& where);
+GridConfig checked(const GridConfig& config);
 
-UniformGridConfig config_from_parameters(const Parameters& params);
+GridConfig config_from_parameters(const Parameters& params);
 
 }  // namespace remnant::grid

@@ -1,83 +1,68 @@
 #include "ghost_exchange.hpp"
 
-#include <string>
-#include <vector>
-
-#include "remnant/error.hpp"
+#include "ghost_plan.hpp"
 
 namespace remnant::grid {
 
 namespace {
-
-// The ghost box of `b` that its neighbour in direction `o` fills.
-Box ghost_box(const Block& b, const Offset& o) {
-  Box box;
-  for (std::size_t d = 0; d < 3; ++d) {
-    const int n = b.n[d], ng = b.ng[d];
-    box.lo[d] = o[d] < 0 ? -ng : (o[d] == 0 ? 0 : n);
-    box.hi[d] = o[d] < 0 ? 0 : (o[d] == 0 ? n : n + ng);
-  }
-  return box;
-}
-
-// The interior box of `b` that its neighbour in direction `o` needs for its ghosts.
-Box source_box(const Block& b, const Offset& o) {
-  Box box;
-  for (std::size_t d = 0; d < 3; ++d) {
-    const int n = b.n[d], ng = b.ng[d];
-    box.lo[d] = o[d] > 0 ? n - ng : 0;
-    box.hi[d] = o[d] < 0 ? ng : n;
-  }
-  return box;
-}
-
-Offset opposite(const Offset& o) { return {-o[0], -o[1], -o[2]}; }
-
-// Unique per (receiving block, direction it receives from).
-int message_tag(std::int64_t receiver_gid, const Offset& from) {
-  return static_cast<int>(receiver_gid * 27 + offset_code(from));
-}
-
+int phase_of(const Transfer& t) { return t.kind == TransferKind::prolong ? t.dst_level : 0; }
 }  // namespace
 
-GhostExchange::GhostExchange(const BlockLayout& layout, std::span<Block* const> blocks, int rank,
-                             MPI_Comm comm)
-    : comm_(comm), blocks_(blocks.begin(), blocks.end()) {
-  int* tag_ub = nullptr;
-  int flag = 0;
-  MPI_Comm_get_attr(comm, MPI_TAG_UB, &tag_ub, &flag);
-  const std::int64_t max_tag = layout.total_blocks() * 27 - 1;
-  if (flag && max_tag > *tag_ub)
-    throw RunError("Grid: " + std::to_string(layout.total_blocks()) +
-                   " blocks need message tags up to " + std::to_string(max_tag) +
-                   ", above this MPI's limit " + std::to_string(*tag_ub) + "; use larger blocks");
-
-  const std::int64_t first = layout.first_gid(rank);
-  auto local_block = [&](std::int64_t gid) { return blocks[static_cast<std::size_t>(gid - first)]; };
-  const auto offsets = neighbour_offsets(layout.dimension());
-  for (Block* b : blocks) {
-    for (const Offset& o : offsets) {
-      const std::int64_t ngid = layout.neighbour(b->gid, o);
-      if (ngid < 0) continue;  // a domain face: the outer boundary condition fills it
-      const int peer = layout.owner(ngid);
-      if (peer == rank) {
-        Block* nb = local_block(ngid);
-        local_.push_back({nb, source_box(*nb, opposite(o)), b, ghost_box(*b, o)});
-        continue;
-      }
-      // The neighbour relation is symmetric, so every remote pair sends once each way.
-      const Box to = ghost_box(*b, o);
-      recvs_.push_back({b, to, peer, message_tag(b->gid, o), recv_points_});
-      recv_points_ += to.points();
-      const Box from = source_box(*b, o);
-      sends_.push_back({b, from, peer, message_tag(ngid, opposite(o)), send_points_});
-      send_points_ += from.points();
+GhostExchange::GhostExchange(const Forest& forest, const BoundaryMaps& maps, const LevelGeometry& geometry,
+                             std::span<Block* const> blocks, int rank, MPI_Comm comm,
+                             const std::array<int, 3>& stagger, int ghost_zones)
+    : comm_(comm), dimension_(forest.dimension()), stagger_(stagger), geometry_(&geometry),
+      blocks_(blocks.begin(), blocks.end()), first_gid_(forest.first_gid(rank)) {
+  // Every rank enumerates the transfers of the whole mesh in the same order and keeps those it
+  // takes part in: both sides of a message then agree on its layout without talking.
+  std::vector<Transfer> all;
+  const std::int64_t mine_lo = first_gid_, mine_hi = first_gid_ + forest.block_count(rank);
+  auto is_mine = [&](std::int64_t g) { return g >= mine_lo && g < mine_hi; };
+  for (std::int64_t gid = 0; gid < forest.total_blocks(); ++gid) {
+    all.clear();
+    plan_ghost_transfers(forest, maps, gid, stagger, ghost_zones, all);
+    for (const Transfer& t : all)
+      if (is_mine(t.dst_gid) || is_mine(t.src_gid)) transfers_.push_back(t);
+  }
+  phases_.resize(static_cast<std::size_t>(forest.finest_level() + 1));
+  for (const Transfer& t : transfers_) {
+    Phase& ph = phases_[static_cast<std::size_t>(phase_of(t))];
+    const bool dst_mine = is_mine(t.dst_gid), src_mine = is_mine(t.src_gid);
+    if (dst_mine && src_mine) {
+      ph.local.push_back(&t);
+    } else if (dst_mine) {
+      Peer& p = ph.recvs[forest.owner(t.src_gid)];
+      p.rank = forest.owner(t.src_gid);
+      p.transfers.push_back(&t);
+      p.points += t.src_box.points();
+    } else {
+      Peer& p = ph.sends[forest.owner(t.dst_gid)];
+      p.rank = forest.owner(t.dst_gid);
+      p.transfers.push_back(&t);
+      p.points += t.src_box.points();
     }
   }
 }
 
-void GhostExchange::run(const VariableRegistry& vars, std::span<const int> groups) {
-  if (blocks_.empty()) return;
+std::size_t GhostExchange::local_transfers() const {
+  std::size_t n = 0;
+  for (const Phase& p : phases_) n += p.local.size();
+  return n;
+}
+
+std::size_t GhostExchange::messages() const {
+  std::size_t n = 0;
+  for (const Phase& p : phases_) n += p.sends.size();
+  return n;
+}
+
+void GhostExchange::run(const VariableRegistry& vars, std::span<const int> groups,
+                        const std::function<void(int)>& after_phase) {
+  if (blocks_.empty()) {
+    // Still take part in the phases' collective structure (nothing to send or receive).
+    for (int p = 0; p < phases(); ++p) after_phase(p);
+    return;
+  }
   std::vector<GroupLayout> layouts;
   std::size_t ncomp = 0;
   for (int g : groups) {
@@ -85,33 +70,67 @@ void GhostExchange::run(const VariableRegistry& vars, std::span<const int> group
     ncomp += static_cast<std::size_t>(layouts.back().ncomp);
   }
   if (ncomp == 0) return;
-  if (send_buffer_.size() < send_points_ * ncomp) send_buffer_.resize(send_points_ * ncomp);
-  if (recv_buffer_.size() < recv_points_ * ncomp) recv_buffer_.resize(recv_points_ * ncomp);
-  requests_.assign(recvs_.size() + sends_.size(), MPI_REQUEST_NULL);
+  std::vector<MPI_Request> requests;
 
-  // Receives first, so that no message waits in an unexpected-message queue.
-  std::size_t r = 0;
-  for (const Message& m : recvs_)
-    MPI_Irecv(recv_buffer_.data() + m.first_point * ncomp, static_cast<int>(m.box.points() * ncomp),
-              MPI_DOUBLE, m.peer, m.tag, comm_, &requests_[r++]);
-  for (const Message& m : sends_) {
-    double* const start = send_buffer_.data() + m.first_point * ncomp;
-    double* out = start;
-    for (const GroupLayout& gl : layouts)
-      for (int c = 0; c < gl.ncomp; ++c) out = pack_box(gl.field(*m.block, c), m.box, out);
-    MPI_Isend(start, static_cast<int>(out - start), MPI_DOUBLE, m.peer, m.tag, comm_, &requests_[r++]);
-  }
+  for (int phase = 0; phase < phases(); ++phase) {
+    const Phase& ph = phases_[static_cast<std::size_t>(phase)];
+    std::size_t send_total = 0, recv_total = 0;
+    for (const auto& [r, p] : ph.sends) send_total += p.points * ncomp;
+    for (const auto& [r, p] : ph.recvs) recv_total += p.points * ncomp;
+    if (send_buffer_.size() < send_total) send_buffer_.resize(send_total);
+    if (recv_buffer_.size() < recv_total) recv_buffer_.resize(recv_total);
+    requests.assign(ph.sends.size() + ph.recvs.size(), MPI_REQUEST_NULL);
+    std::size_t req = 0, offset = 0;
+    // Receives first, so that no message waits in an unexpected-message queue.
+    for (const auto& [r, p] : ph.recvs) {
+      MPI_Irecv(recv_buffer_.data() + offset, static_cast<int>(p.points * ncomp), MPI_DOUBLE, r, phase, comm_,
+                &requests[req++]);
+      offset += p.points * ncomp;
+    }
+    offset = 0;
+    for (const auto& [r, p] : ph.sends) {
+      double* const start = send_buffer_.data() + offset;
+      double* out = start;
+      for (const Transfer* t : p.transfers) {
+        Block& src = local_block(t->src_gid);
+        for (const GroupLayout& gl : layouts)
+          for (int c = 0; c < gl.ncomp; ++c) out = pack_box(gl.field(src, c), t->src_box, out);
+      }
+      MPI_Isend(start, static_cast<int>(out - start), MPI_DOUBLE, r, phase, comm_, &requests[req++]);
+      offset += p.points * ncomp;
+    }
 
-  // Local copies overlap with the messages in flight.
-  for (const LocalCopy& lc : local_)
-    for (const GroupLayout& gl : layouts)
-      for (int c = 0; c < gl.ncomp; ++c) copy_box(gl.field(*lc.src, c), lc.from, gl.field(*lc.dst, c), lc.to);
+    // Local transfers overlap with the messages in flight.
+    for (const Transfer* t : ph.local) {
+      Block& src = local_block(t->src_gid);
+      Block& dst = local_block(t->dst_gid);
+      for (const GroupLayout& gl : layouts) {
+        const auto& spec = vars.group(gl.group);
+        for (int c = 0; c < gl.ncomp; ++c)
+          apply_transfer(*t, gl.field(src, c), gl.field(dst, c), t->map.sign(spec.components[static_cast<std::size_t>(c)]),
+                         stagger_, dimension_, *geometry_);
+      }
+    }
 
-  MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE);
-  for (const Message& m : recvs_) {
-    const double* in = recv_buffer_.data() + m.first_point * ncomp;
-    for (const GroupLayout& gl : layouts)
-      for (int c = 0; c < gl.ncomp; ++c) in = unpack_box(in, gl.field(*m.block, c), m.box);
+    MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+    offset = 0;
+    for (const auto& [r, p] : ph.recvs) {
+      double* in = recv_buffer_.data() + offset;
+      for (const Transfer* t : p.transfers) {
+        Block& dst = local_block(t->dst_gid);
+        const std::size_t points = t->src_box.points();
+        for (const GroupLayout& gl : layouts) {
+          const auto& spec = vars.group(gl.group);
+          for (int c = 0; c < gl.ncomp; ++c) {
+            apply_transfer(*t, buffer_field(in, t->src_box), gl.field(dst, c),
+                           t->map.sign(spec.components[static_cast<std::size_t>(c)]), stagger_, dimension_, *geometry_);
+            in += points;
+          }
+        }
+      }
+      offset += p.points * ncomp;
+    }
+    after_phase(phase);
   }
 }
 

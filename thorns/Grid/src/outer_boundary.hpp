@@ -1,16 +1,17 @@
 #pragma once
-// Boundary conditions on non-periodic domain faces, after the ghost exchange.
+// Outflow (zero-gradient extrapolation) on domain faces, after the ghost exchange. Every other
+// condition (periodic, reflect, axis, origin) is a boundary map that the exchange applies.
 #include <span>
 
-#include "block_layout.hpp"
+#include "forest.hpp"
 
 namespace remnant::grid {
 
 // Applies direction after direction (x, then y, then z), each over the full extent of the other
 // directions including their ghosts, so that edges and corners end up as if the conditions were
-// applied to an infinitely fine face by face: later directions overwrite the corner ghosts from
-// values the earlier directions (or the exchange) already set. Cell-centred groups only.
-void apply_outer_boundaries(Block& block, const BlockLayout& layout, const UniformGridConfig& config,
-                            const VariableRegistry& vars, std::span<const int> groups);
+// applied face by face: later directions overwrite corner ghosts from values the earlier
+// directions (or the exchange) already set.
+void apply_outflow(Block& block, const Forest& forest, const GridConfig& config, const VariableRegistry& vars,
+                   std::span<const int> groups);
 
 }  // namespace remnant::grid

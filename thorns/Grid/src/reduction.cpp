@@ -21,14 +21,43 @@ double accumulate_interior(const Block& b, const Field& f, double init, Op op) {
   return acc;
 }
 
+// Sum of op(u) * dV over the interior of a curvilinear block (dV varies per cell).
+template <class Op>
+double weighted_interior(const Block& b, const Field& f, Op op) {
+  const double* w0 = b.volume_weights(0);
+  const double* w1 = b.volume_weights(1);
+  const double* w2 = b.volume_weights(2);
+  double acc = 0;
+  for (int k = 0; k < b.n[2]; ++k)
+    for (int j = 0; j < b.n[1]; ++j) {
+      const double* row = f.origin + j * f.sj + k * f.sk;
+      const double w12 = w1[j] * w2[k];
+      for (int i = 0; i < b.n[0]; ++i) acc += op(row[i]) * (w0[i] * w12);
+    }
+  return acc;
+}
+
 }  // namespace
 
 BlockPartial block_partial(Block& b, int group, int comp, ReductionKind kind) {
   const Field f = b.field(group, comp);
+  BlockPartial p;
+  auto id = [](double u) { return u; };
+  auto absolute = [](double u) { return std::abs(u); };
+  auto square = [](double u) { return u * u; };
+  if (b.coordinates != CoordinateSystem::cartesian) {
+    p.volume = weighted_interior(b, f, [](double) { return 1.0; });
+    switch (kind) {
+      case ReductionKind::volume_integral: p.value = weighted_interior(b, f, id); return p;
+      case ReductionKind::norm1: p.value = weighted_interior(b, f, absolute); return p;
+      case ReductionKind::norm2: p.value = weighted_interior(b, f, square); return p;
+      default: break;
+    }
+  }
+  // dV is the same for every cell of a Cartesian block.
   const double dv = b.cell_volume();
   const double cells = static_cast<double>(b.n[0]) * b.n[1] * b.n[2];
-  BlockPartial p;
-  p.volume = cells * dv;
+  if (b.coordinates == CoordinateSystem::cartesian) p.volume = cells * dv;
   switch (kind) {
     case ReductionKind::minimum:
       p.value = accumulate_interior(b, f, std::numeric_limits<double>::infinity(),
@@ -42,7 +71,6 @@ BlockPartial block_partial(Block& b, int group, int comp, ReductionKind kind) {
       p.value = accumulate_interior(b, f, 0.0, [](double a, double u) { return a + u; });
       break;
     case ReductionKind::volume_integral:
-      // dV is the same for every cell of a Cartesian block; curvilinear grids weight per cell.
       p.value = dv * accumulate_interior(b, f, 0.0, [](double a, double u) { return a + u; });
       break;
     case ReductionKind::norm1:
@@ -73,7 +101,7 @@ double combine(std::span<const BlockPartial> partials, ReductionKind kind) {
   }
 }
 
-double reduce_blocks(std::span<Block* const> blocks, const BlockLayout& layout, int group, int comp,
+double reduce_blocks(std::span<Block* const> blocks, const Forest& layout, int group, int comp,
                      ReductionKind kind, MPI_Comm comm) {
   std::vector<BlockPartial> mine;
   mine.reserve(blocks.size());

@@ -26,7 +26,7 @@ TestGroups make_test_groups() {
   return t;
 }
 
-double test_function(const UniformGridConfig& c, int comp, std::array<std::int64_t, 3> g) {
+double test_function(const GridConfig& c, int comp, std::array<std::int64_t, 3> g) {
   double x[3];
   for (std::size_t d = 0; d < 3; ++d) {
     const double dx = (c.xmax[d] - c.xmin[d]) / static_cast<double>(c.ncells[d]);
@@ -50,7 +50,7 @@ std::array<std::int64_t, 3> global_index(const Block& b, int i, int j, int k) {
 }
 }  // namespace
 
-void fill_interior(UniformGrid& grid, const VariableRegistry& vars, int group) {
+void fill_interior(AmrGrid& grid, const VariableRegistry& vars, int group) {
   for (Block* b : grid.local_blocks()) {
     for (int c = 0; c < vars.group(group).ncomp(); ++c) {
       Field f = b->field(group, c);
@@ -63,9 +63,9 @@ void fill_interior(UniformGrid& grid, const VariableRegistry& vars, int group) {
   }
 }
 
-double expected_value(const UniformGrid& grid, const ComponentSpec& comp, int comp_index,
+double expected_value(const AmrGrid& grid, const ComponentSpec& comp, int comp_index,
                       std::array<std::int64_t, 3> g) {
-  const UniformGridConfig& c = grid.config();
+  const GridConfig& c = grid.config();
   double parity = 1.0;
   for (std::size_t d = 0; d < 3; ++d) {
     const std::int64_t n = c.ncells[d];
@@ -84,7 +84,7 @@ double expected_value(const UniformGrid& grid, const ComponentSpec& comp, int co
   return parity * test_function(c, comp_index, g);
 }
 
-std::int64_t count_wrong_points(UniformGrid& grid, const VariableRegistry& vars, int group,
+std::int64_t count_wrong_points(AmrGrid& grid, const VariableRegistry& vars, int group,
                                 double tolerance) {
   std::int64_t wrong = 0;
   for (Block* b : grid.local_blocks()) {

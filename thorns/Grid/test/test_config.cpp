@@ -13,7 +13,7 @@
 namespace remnant::grid::test {
 namespace {
 
-std::string error_of(const UniformGridConfig& c) {
+std::string error_of(const GridConfig& c) {
   try {
     checked(c);
   } catch (const InputError& e) {
@@ -23,7 +23,7 @@ std::string error_of(const UniformGridConfig& c) {
 }
 
 TEST(GridConfig, BlockSizeMustDivideCellsAndTheMessageNamesBoth) {
-  UniformGridConfig c;
+  GridConfig c;
   c.ncells = {32, 30, 32};
   const std::string e = error_of(c);
   EXPECT_NE(e.find("Grid::ncells[1] = 30"), std::string::npos) << e;
@@ -31,30 +31,54 @@ TEST(GridConfig, BlockSizeMustDivideCellsAndTheMessageNamesBoth) {
 }
 
 TEST(GridConfig, PeriodicOnOneSideOnlyIsAnError) {
-  UniformGridConfig c;
+  GridConfig c;
   c.boundary_lower[2] = Boundary::periodic;
   EXPECT_NE(error_of(c).find("periodic on one side only"), std::string::npos) << error_of(c);
 }
 
-TEST(GridConfig, CurvilinearCoordinatesComeLater) {
-  UniformGridConfig c;
-  c.coordinates = "spherical";
-  EXPECT_NE(error_of(c).find("come with the Grid issue"), std::string::npos) << error_of(c);
+TEST(GridConfig, CurvilinearFacesNeedAxisAndOrigin) {
+  GridConfig c;
+  c.coordinates = CoordinateSystem::spherical;
+  c.dimension = 2;
+  c.ncells = {32, 16, 1};
+  c.xmin = {0, 0, 0};
+  c.xmax = {1, 3.141592653589793 / 2, 1};
+  EXPECT_NE(error_of(c).find("Grid::boundary_lower[0] = outflow at r = 0"), std::string::npos) << error_of(c);
+  c.boundary_lower = {Boundary::origin, Boundary::axis, Boundary::outflow};
+  EXPECT_NE(error_of(c).find("theta must span [0, pi], or [0, pi/2]"), std::string::npos) << error_of(c);
+  c.boundary_upper[1] = Boundary::reflect;
+  EXPECT_EQ(error_of(c), "");
+  const GridConfig k = checked(c);
+  EXPECT_DOUBLE_EQ(k.xmax[2], 2 * 3.141592653589793) << "unused phi spans the circle";
+  c.coordinates = CoordinateSystem::cartesian;
+  c.xmin = {-1, -1, -1};
+  EXPECT_NE(error_of(c).find("Cartesian coordinates have no axis or origin"), std::string::npos) << error_of(c);
+}
+
+TEST(GridConfig, RefinementNeedsEvenBlocksOfTwiceTheGhostWidth) {
+  GridConfig c;
+  c.ncells = {32, 32, 32};
+  c.block_size = {8, 8, 8};
+  c.ghost_zones = 3;
+  c.max_level = 2;
+  EXPECT_EQ(error_of(c), "");
+  c.block_size = {4, 8, 8};
+  EXPECT_NE(error_of(c).find("at least 2 * Grid::ghost_zones = 6"), std::string::npos) << error_of(c);
 }
 
 TEST(GridConfig, BlocksMustHoldTheGhostWidth) {
-  UniformGridConfig c;
+  GridConfig c;
   c.ncells = {32, 32, 32};
   c.block_size = {16, 2, 16};
   EXPECT_NE(error_of(c).find("smaller than Grid::ghost_zones = 3"), std::string::npos) << error_of(c);
 }
 
 TEST(GridConfig, EntriesBeyondTheDimensionAreIgnored) {
-  UniformGridConfig c;
+  GridConfig c;
   c.dimension = 1;
   c.ncells = {64, 30, 7};  // 30 and 7 would not divide by 16, but they are not used
   c.boundary_lower[1] = Boundary::periodic;
-  const UniformGridConfig k = checked(c);
+  const GridConfig k = checked(c);
   EXPECT_EQ(k.ncells, (std::array<std::int64_t, 3>{64, 1, 1}));
   EXPECT_EQ(k.block_size, (std::array<int, 3>{16, 1, 1}));
   EXPECT_EQ(k.boundary_lower[1], Boundary::outflow);
@@ -73,8 +97,8 @@ TEST(GridConfig, ThornYamlDefaultsGiveTheDefaultConfig) {
   EXPECT_EQ(spec.provides, (std::vector<std::string>{"grid"}));
   Parameters params;
   for (const auto& p : spec.parameters) params.declare(p);
-  const UniformGridConfig c = config_from_parameters(params);
-  const UniformGridConfig d = checked(UniformGridConfig{});
+  const GridConfig c = config_from_parameters(params);
+  const GridConfig d = checked(GridConfig{});
   EXPECT_EQ(c.coordinates, d.coordinates);
   EXPECT_EQ(c.dimension, d.dimension);
   EXPECT_EQ(c.ncells, d.ncells);
@@ -86,7 +110,7 @@ TEST(GridConfig, ThornYamlDefaultsGiveTheDefaultConfig) {
   EXPECT_EQ(c.boundary_upper, d.boundary_upper);
 
   VariableRegistry vars;
-  UniformGrid grid(GridSetup{params, vars, MPI_COMM_SELF});
+  AmrGrid grid(GridSetup{params, vars, MPI_COMM_SELF});
   EXPECT_EQ(grid.global_cells(), 32 * 32 * 32);
   EXPECT_EQ(grid.local_blocks().size(), 8u);
 }
@@ -104,29 +128,31 @@ TEST(GridConfig, ParameterErrorsNameTheParfileLocation) {
   }
   params.set("Grid", "block_size", std::vector<std::int64_t>{16, 16, 16}, {"run.yaml", 7, 15});
   params.set("Grid", "coordinates", std::string("cylindrical"), {"run.yaml", 3, 16});
+  params.set("Grid", "xmin", std::vector<double>{-1, -1, -1}, {"run.yaml", 4, 10});
   try {
     config_from_parameters(params);
     FAIL() << "expected an InputError";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("run.yaml:3:16"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("run.yaml:4:10"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("R cannot be negative"), std::string::npos) << e.what();
   }
 }
 
 TEST(GridConfig, DescribeAndSpacing) {
-  UniformGridConfig c;
+  GridConfig c;
   c.dimension = 2;
   c.ncells = {64, 32, 1};
   c.block_size = {16, 16, 1};
   c.boundary_lower[0] = c.boundary_upper[0] = Boundary::periodic;
   c.boundary_upper[1] = Boundary::reflect;
   VariableRegistry vars;
-  UniformGrid grid(c, vars, MPI_COMM_SELF);
+  AmrGrid grid(c, vars, MPI_COMM_SELF);
   EXPECT_EQ(grid.dimension(), 2);
   EXPECT_EQ(grid.global_cells(), 64 * 32);
   EXPECT_DOUBLE_EQ(grid.min_spacing(), 2.0 / 64);
   const std::string d = grid.describe();
-  EXPECT_NE(d.find("64 x 32 = 2048"), std::string::npos) << d;
-  EXPECT_NE(d.find("4 x 2 = 8 blocks"), std::string::npos) << d;
+  EXPECT_NE(d.find("64 x 32 on level 0; 2048 in all"), std::string::npos) << d;
+  EXPECT_NE(d.find("level 0     8 blocks, 2048 cells"), std::string::npos) << d;
   EXPECT_NE(d.find("x: periodic, y: outflow/reflect"), std::string::npos) << d;
 }
 

@@ -22,7 +22,7 @@ class PeriodicExchange : public ::testing::TestWithParam<PeriodicCase> {};
 
 TEST_P(PeriodicExchange, GhostsHoldThePeriodicImageExactly) {
   const PeriodicCase& p = GetParam();
-  UniformGridConfig c;
+  GridConfig c;
   c.dimension = p.dimension;
   c.ncells = p.ncells;
   c.block_size = p.block_size;
@@ -31,7 +31,7 @@ TEST_P(PeriodicExchange, GhostsHoldThePeriodicImageExactly) {
   c.xmax = {1, 3, 2.5};
   for (std::size_t d = 0; d < 3; ++d) c.boundary_lower[d] = c.boundary_upper[d] = Boundary::periodic;
   TestGroups t = make_test_groups();
-  UniformGrid grid(c, t.vars, MPI_COMM_SELF);
+  AmrGrid grid(c, t.vars, MPI_COMM_SELF);
   const std::vector<int> groups = {t.scalar, t.vector, t.tensor_dd};
   for (int g : groups) fill_interior(grid, t.vars, g);
   grid.synchronize(groups);
@@ -56,12 +56,12 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 TEST(GhostExchange, OnlyTheRequestedGroupsChange) {
-  UniformGridConfig c;
+  GridConfig c;
   c.ncells = {16, 16, 16};
   c.block_size = {8, 8, 8};
   for (std::size_t d = 0; d < 3; ++d) c.boundary_lower[d] = c.boundary_upper[d] = Boundary::periodic;
   TestGroups t = make_test_groups();
-  UniformGrid grid(c, t.vars, MPI_COMM_SELF);
+  AmrGrid grid(c, t.vars, MPI_COMM_SELF);
   fill_interior(grid, t.vars, t.scalar);
   fill_interior(grid, t.vars, t.vector);
   const std::vector<int> only_scalar = {t.scalar};
@@ -71,19 +71,19 @@ TEST(GhostExchange, OnlyTheRequestedGroupsChange) {
   EXPECT_TRUE(std::isnan(b.field(t.vector, 0)(-1, 0, 0))) << "vector ghosts were not requested";
 }
 
-TEST(GhostExchange, StaggeredGroupsAreRefusedClearly) {
-  UniformGridConfig c;
+TEST(GhostExchange, EdgeCentredGroupsAreRefusedClearly) {
+  GridConfig c;
   c.ncells = {16, 16, 16};
   c.block_size = {8, 8, 8};
   VariableRegistry vars;
-  const int face = add_group(vars, "Bx", TensorKind::scalar, Centering::face_x);
-  UniformGrid grid(c, vars, MPI_COMM_SELF);
+  const int face = add_group(vars, "Ex", TensorKind::scalar, Centering::edge_x);
+  AmrGrid grid(c, vars, MPI_COMM_SELF);
   const std::vector<int> groups = {face};
   try {
     grid.synchronize(groups);
     FAIL() << "expected a RunError";
   } catch (const RunError& e) {
-    EXPECT_NE(std::string(e.what()).find("face_x-centred group 'Test::Bx' is not yet supported"),
+    EXPECT_NE(std::string(e.what()).find("edge_x-centred group 'Test::Ex' is not supported"),
               std::string::npos) << e.what();
   }
 }

@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "grid_test_util.hpp"
@@ -24,8 +25,8 @@ std::int64_t global_sum(std::int64_t v) {
   return s;
 }
 
-UniformGridConfig config(int dimension, Boundary lower, Boundary upper) {
-  UniformGridConfig c;
+GridConfig config(int dimension, Boundary lower, Boundary upper) {
+  GridConfig c;
   c.dimension = dimension;
   c.ncells = {24, 16, 12};
   c.block_size = {8, 4, 4};  // 3 x 4 x 3 = 36 blocks, uneven over 2 ranks in Morton order
@@ -37,9 +38,9 @@ UniformGridConfig config(int dimension, Boundary lower, Boundary upper) {
   return c;
 }
 
-void expect_ghosts_right(const UniformGridConfig& c) {
+void expect_ghosts_right(const GridConfig& c) {
   TestGroups t = make_test_groups();
-  UniformGrid grid(c, t.vars, MPI_COMM_WORLD);
+  AmrGrid grid(c, t.vars, MPI_COMM_WORLD);
   const std::vector<int> groups = {t.scalar, t.vector, t.covector, t.axial, t.tensor_dd};
   for (int g : groups) fill_interior(grid, t.vars, g);
   grid.synchronize(groups);
@@ -55,37 +56,37 @@ TEST(GridMpi, PeriodicGhostsAcrossRanks) {
 
 TEST(GridMpi, ReflectAndOutflowAcrossRanks) {
   expect_ghosts_right(config(3, Boundary::reflect, Boundary::outflow));
-  UniformGridConfig c = config(3, Boundary::outflow, Boundary::reflect);
+  GridConfig c = config(3, Boundary::outflow, Boundary::reflect);
   c.boundary_lower[1] = c.boundary_upper[1] = Boundary::periodic;
   expect_ghosts_right(c);
 }
 
 TEST(GridMpi, TwoBlocksPeriodicOnTwoRanks) {
   // Each block's lower and upper neighbour is the same remote block: tags must tell them apart.
-  UniformGridConfig c = config(3, Boundary::periodic, Boundary::periodic);
+  GridConfig c = config(3, Boundary::periodic, Boundary::periodic);
   c.ncells = {16, 8, 8};
   c.block_size = {8, 8, 8};
   expect_ghosts_right(c);
 }
 
 TEST(GridMpi, RanksWithoutBlocks) {
-  UniformGridConfig c = config(2, Boundary::periodic, Boundary::periodic);
+  GridConfig c = config(2, Boundary::periodic, Boundary::periodic);
   c.ncells = {8, 8, 1};
   c.block_size = {8, 8, 1};
   expect_ghosts_right(c);
   VariableRegistry vars;
   const int u = add_group(vars, "u", TensorKind::scalar);
-  UniformGrid grid(c, vars, MPI_COMM_WORLD);
+  AmrGrid grid(c, vars, MPI_COMM_WORLD);
   for (Block* b : grid.local_blocks()) for_interior(*b, [&](int i, int j, int k) { b->field(u, 0)(i, j, k) = 1; });
   EXPECT_EQ(grid.reduce(u, 0, ReductionKind::sum), 64.0);
 }
 
 TEST(GridMpi, ReductionsAreBitwiseEqualToASingleRank) {
   TestGroups t = make_test_groups();
-  const UniformGridConfig c = config(3, Boundary::outflow, Boundary::outflow);
-  UniformGrid shared(c, t.vars, MPI_COMM_WORLD);
-  UniformGrid alone(c, t.vars, MPI_COMM_SELF);
-  for (UniformGrid* g : {&shared, &alone}) fill_interior(*g, t.vars, t.vector);
+  const GridConfig c = config(3, Boundary::outflow, Boundary::outflow);
+  AmrGrid shared(c, t.vars, MPI_COMM_WORLD);
+  AmrGrid alone(c, t.vars, MPI_COMM_SELF);
+  for (AmrGrid* g : {&shared, &alone}) fill_interior(*g, t.vars, t.vector);
   for (int comp = 0; comp < 3; ++comp)
     for (ReductionKind k : {ReductionKind::minimum, ReductionKind::maximum, ReductionKind::sum,
                             ReductionKind::volume_integral, ReductionKind::norm1, ReductionKind::norm2}) {
@@ -96,6 +97,61 @@ TEST(GridMpi, ReductionsAreBitwiseEqualToASingleRank) {
       EXPECT_EQ(a, a0) << "every rank has the same value";
     }
   EXPECT_NE(shared.describe().find("ranks       " + std::to_string(world_size())), std::string::npos) << shared.describe();
+}
+
+// A refined mesh on all ranks and on one: the same ghosts (prolongation, restriction, mirrors
+// across the axis and origin) and, after a regrid that moves blocks between ranks, the same bits.
+TEST(GridMpi, RefinedMeshGivesTheSameBitsAsOneRank) {
+  GridConfig c;
+  c.coordinates = CoordinateSystem::spherical;
+  c.dimension = 2;
+  c.ncells = {32, 16, 1};
+  c.block_size = {8, 8, 1};
+  c.ghost_zones = 3;
+  c.xmin = {0, 0, 0};
+  c.xmax = {2, 3.141592653589793, 1};
+  c.boundary_lower = {Boundary::origin, Boundary::axis, Boundary::outflow};
+  c.boundary_upper = {Boundary::outflow, Boundary::axis, Boundary::outflow};
+  c.max_level = 2;
+  c.regions = {{RegionKind::shell, RegionMode::at_least, 2, {0.5, 0.9, 0, 0, 0, 0}}};
+  TestGroups t = make_test_groups();
+  AmrGrid shared(c, t.vars, MPI_COMM_WORLD);
+  AmrGrid alone(c, t.vars, MPI_COMM_SELF);
+  ASSERT_EQ(shared.all_blocks(), alone.all_blocks());
+  const std::vector<int> groups = {t.scalar, t.vector, t.tensor_dd};
+  for (AmrGrid* g : {&shared, &alone})
+    for (int grp : groups)
+      for (Block* b : g->local_blocks())
+        for (int comp = 0; comp < t.vars.group(grp).ncomp(); ++comp)
+          for_interior(*b, [&](int i, int j, int k) {
+            const double r = b->centroid(0, i), th = b->centroid(1, j);
+            b->field(grp, comp)(i, j, k) = (1 + comp) * std::exp(-4 * (r - 0.7) * (r - 0.7)) * (1 + 0.3 * std::cos(th));
+          });
+  // Refine every level-0 block (blocks move between ranks), then compare everything.
+  std::vector<BlockKey> leaves;
+  for (const BlockKey& k : shared.all_blocks())
+    if (k.level == 0) {
+      for (int c1 = 0; c1 < 2; ++c1)
+        for (int c0 = 0; c0 < 2; ++c0) leaves.push_back({1, {2 * k.index[0] + c0, 2 * k.index[1] + c1, 0}});
+    } else {
+      leaves.push_back(k);
+    }
+  EXPECT_TRUE(shared.set_leaves(leaves));
+  EXPECT_TRUE(alone.set_leaves(leaves));
+  for (AmrGrid* g : {&shared, &alone}) g->synchronize(groups);
+  for (int grp : groups)
+    for (int comp = 0; comp < t.vars.group(grp).ncomp(); ++comp)
+      for (ReductionKind k : {ReductionKind::volume_integral, ReductionKind::norm2, ReductionKind::maximum})
+        EXPECT_EQ(shared.reduce(grp, comp, k), alone.reduce(grp, comp, k)) << to_string(k);
+  // Ghosts too: every local block of the shared grid equals the same block of the single-rank grid.
+  std::int64_t different = 0;
+  for (Block* b : shared.local_blocks()) {
+    Block* twin = alone.local_blocks()[static_cast<std::size_t>(b->gid)];
+    for (int grp : groups)
+      for (std::size_t p = 0; p < b->size(grp); ++p)
+        if (std::memcmp(&b->data(grp)[p], &twin->data(grp)[p], sizeof(double)) != 0) ++different;
+  }
+  EXPECT_EQ(global_sum(different), 0);
 }
 
 }  // namespace

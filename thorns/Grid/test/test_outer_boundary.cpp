@@ -10,8 +10,8 @@
 namespace remnant::grid::test {
 namespace {
 
-UniformGridConfig box3d(Boundary lower, Boundary upper) {
-  UniformGridConfig c;
+GridConfig box3d(Boundary lower, Boundary upper) {
+  GridConfig c;
   c.ncells = {12, 8, 16};
   c.block_size = {4, 4, 8};
   c.ghost_zones = 3;
@@ -22,9 +22,9 @@ UniformGridConfig box3d(Boundary lower, Boundary upper) {
   return c;
 }
 
-void expect_all_ghosts_right(const UniformGridConfig& c) {
+void expect_all_ghosts_right(const GridConfig& c) {
   TestGroups t = make_test_groups();
-  UniformGrid grid(c, t.vars, MPI_COMM_SELF);
+  AmrGrid grid(c, t.vars, MPI_COMM_SELF);
   const std::vector<int> groups = {t.scalar, t.vector, t.covector, t.axial, t.tensor_dd};
   for (int g : groups) fill_interior(grid, t.vars, g);
   grid.synchronize(groups);
@@ -45,14 +45,14 @@ TEST(OuterBoundary, ReflectBelowOutflowAbove) {
 }
 
 TEST(OuterBoundary, MixedPerDirection) {
-  UniformGridConfig c = box3d(Boundary::outflow, Boundary::outflow);
+  GridConfig c = box3d(Boundary::outflow, Boundary::outflow);
   c.boundary_lower = {Boundary::reflect, Boundary::periodic, Boundary::outflow};
   c.boundary_upper = {Boundary::outflow, Boundary::periodic, Boundary::reflect};
   expect_all_ghosts_right(c);
 }
 
 TEST(OuterBoundary, OneAndTwoDimensions) {
-  UniformGridConfig c = box3d(Boundary::reflect, Boundary::outflow);
+  GridConfig c = box3d(Boundary::reflect, Boundary::outflow);
   c.dimension = 2;
   expect_all_ghosts_right(c);
   c.dimension = 1;
@@ -62,14 +62,14 @@ TEST(OuterBoundary, OneAndTwoDimensions) {
 // The parities the reflect condition applied, checked against the tensor transformation law
 // written out by hand (not through expand_tensor).
 TEST(OuterBoundary, ReflectionParitiesFollowTheTensorType) {
-  UniformGridConfig c;
+  GridConfig c;
   c.dimension = 3;
   c.ncells = {4, 4, 4};
   c.block_size = {4, 4, 4};
   c.ghost_zones = 1;
   c.boundary_lower = {Boundary::reflect, Boundary::reflect, Boundary::reflect};
   TestGroups t = make_test_groups();
-  UniformGrid grid(c, t.vars, MPI_COMM_SELF);
+  AmrGrid grid(c, t.vars, MPI_COMM_SELF);
   Block& b = *grid.local_blocks()[0];
   const std::vector<int> groups = {t.scalar, t.vector, t.covector, t.axial, t.tensor_dd};
   for (int g : groups)

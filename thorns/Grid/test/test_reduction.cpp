@@ -11,15 +11,15 @@ namespace {
 
 // Sets component 0 of `group` to u(x, y, z) at cell centres.
 template <class F>
-void set_field(UniformGrid& grid, int group, F&& u) {
+void set_field(AmrGrid& grid, int group, F&& u) {
   for (Block* b : grid.local_blocks()) {
     Field f = b->field(group, 0);
     for_interior(*b, [&](int i, int j, int k) { f(i, j, k) = u(b->x(0, i), b->x(1, j), b->x(2, k)); });
   }
 }
 
-UniformGridConfig cube(int n, int block) {
-  UniformGridConfig c;
+GridConfig cube(int n, int block) {
+  GridConfig c;
   c.ncells = {n, n, n};
   c.block_size = {block, block, block};
   c.ghost_zones = 2;
@@ -33,7 +33,7 @@ TEST(Reduction, AnalyticValuesOnTheMidpointGrid) {
   const double h = 2.0 / n;
   VariableRegistry vars;
   const int u = add_group(vars, "u", TensorKind::scalar);
-  UniformGrid grid(cube(n, 8), vars, MPI_COMM_SELF);
+  AmrGrid grid(cube(n, 8), vars, MPI_COMM_SELF);
 
   set_field(grid, u, [](double, double, double) { return 1.0; });
   EXPECT_EQ(grid.reduce(u, 0, ReductionKind::sum), n * n * n);
@@ -56,16 +56,16 @@ TEST(Reduction, AnalyticValuesOnTheMidpointGrid) {
 TEST(Reduction, VolumesInOneAndTwoDimensions) {
   VariableRegistry vars;
   const int u = add_group(vars, "u", TensorKind::scalar);
-  UniformGridConfig c = cube(16, 4);
+  GridConfig c = cube(16, 4);
   c.xmax = {3, 1, 1};  // x spans 4, y spans 2
   c.dimension = 2;
   {
-    UniformGrid grid(c, vars, MPI_COMM_SELF);
+    AmrGrid grid(c, vars, MPI_COMM_SELF);
     set_field(grid, u, [](double, double, double) { return 1.0; });
     EXPECT_DOUBLE_EQ(grid.reduce(u, 0, ReductionKind::volume_integral), 8.0);
   }
   c.dimension = 1;
-  UniformGrid grid(c, vars, MPI_COMM_SELF);
+  AmrGrid grid(c, vars, MPI_COMM_SELF);
   set_field(grid, u, [](double, double, double) { return 1.0; });
   EXPECT_DOUBLE_EQ(grid.reduce(u, 0, ReductionKind::volume_integral), 4.0);
   EXPECT_EQ(grid.reduce(u, 0, ReductionKind::sum), 16.0);
@@ -74,7 +74,7 @@ TEST(Reduction, VolumesInOneAndTwoDimensions) {
 TEST(Reduction, NaNIsNeverHiddenByMinOrMax) {
   VariableRegistry vars;
   const int u = add_group(vars, "u", TensorKind::scalar);
-  UniformGrid grid(cube(8, 4), vars, MPI_COMM_SELF);
+  AmrGrid grid(cube(8, 4), vars, MPI_COMM_SELF);
   set_field(grid, u, [](double x, double, double) { return x; });
   grid.local_blocks()[3]->field(u, 0)(1, 2, 3) = std::nan("");
   EXPECT_TRUE(std::isnan(grid.reduce(u, 0, ReductionKind::minimum)));
@@ -86,8 +86,8 @@ TEST(Reduction, IndependentOfTheBlockSize) {
   VariableRegistry vars;
   const int u = add_group(vars, "u", TensorKind::scalar);
   auto profile = [](double x, double y, double z) { return std::exp(-x * x - 2 * y * y) * (1 + z) - 0.3; };
-  UniformGrid coarse_blocks(cube(32, 16), vars, MPI_COMM_SELF);
-  UniformGrid fine_blocks(cube(32, 4), vars, MPI_COMM_SELF);
+  AmrGrid coarse_blocks(cube(32, 16), vars, MPI_COMM_SELF);
+  AmrGrid fine_blocks(cube(32, 4), vars, MPI_COMM_SELF);
   set_field(coarse_blocks, u, profile);
   set_field(fine_blocks, u, profile);
   for (ReductionKind k : {ReductionKind::minimum, ReductionKind::maximum})

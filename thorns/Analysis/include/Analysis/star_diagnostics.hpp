@@ -1,0 +1,27 @@
+#pragma once
+// Star diagnostics over the grid; the history of every evaluation is published as service
+// "Analysis::history" (type remnant::analysis::History) for tests and tools.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "remnant/context.hpp"
+
+namespace remnant::analysis {
+
+struct StarDiagnostics {
+  std::int64_t iteration = 0;
+  double time = 0;
+  double rho_c = 0, rho_max = 0, alpha_c = 0, alpha_min = 0, psi_c = 0, psi_max = 0, rest_mass = 0;
+};
+
+struct History {
+  std::vector<StarDiagnostics> rows;
+};
+
+// Collective over the grid's ranks; every rank gets the same values.
+StarDiagnostics star_diagnostics(Context& ctx);
+const char* tsv_header();
+std::string tsv_line(const StarDiagnostics& d);
+
+}  // namespace remnant::analysis

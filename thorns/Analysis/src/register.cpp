@@ -1,0 +1,29 @@
+// Analysis_Star: diagnostics every Analysis::every iterations, appended to <out_dir>/analysis.tsv by rank 0.
+#include <fstream>
+#include <memory>
+
+#include "Analysis/star_diagnostics.hpp"
+#include "remnant/registrar.hpp"
+
+namespace remnant::analysis {
+namespace {
+
+void star(Context& ctx) {
+  if (!ctx.has_service("Analysis::history")) ctx.publish("Analysis::history", std::make_shared<History>());
+  auto& history = ctx.service<History>("Analysis::history");
+  const StarDiagnostics d = star_diagnostics(ctx);
+  if (ctx.rank() == 0) {
+    const std::string path = ctx.out_dir() + "/analysis.tsv";
+    const bool fresh = history.rows.empty() && !ctx.recovered();
+    std::ofstream out(path, fresh ? std::ios::trunc : std::ios::app);
+    if (!out) throw RunError("Analysis: cannot write " + path);
+    if (fresh) out << tsv_header();
+    out << tsv_line(d);
+  }
+  history.rows.push_back(d);
+}
+
+}  // namespace
+}  // namespace remnant::analysis
+
+REMNANT_REGISTER_THORN(Analysis) { reg.function("Analysis_Star", remnant::analysis::star); }

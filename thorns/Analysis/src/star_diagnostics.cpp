@@ -1,0 +1,63 @@
+#include "Analysis/star_diagnostics.hpp"
+
+#include <mpi.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "remnant/coordinates.hpp"
+
+namespace remnant::analysis {
+
+StarDiagnostics star_diagnostics(Context& ctx) {
+  const int prim = ctx.var("GRMHD::prim"), cons = ctx.var("GRMHD::cons"), metric = ctx.var("Spacetime::metric");
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double r_min = inf, centre[3] = {0, 0, 0};            // rho, alpha, psi at the cell nearest the origin
+  double maxima[3] = {-inf, -inf, -inf};                 // rho_max, -alpha_min, psi_max
+  double mass = 0;
+  for (Block* b : ctx.grid().local_blocks()) {
+    Field rho = b->field(prim, 0), D = b->field(cons, 0), psi = b->field(metric, 0), alpha = b->field(metric, 1);
+    for_interior(*b, [&](int i, int j, int k) {
+      const Point3 X = coords::to_cartesian(b->coordinates, {b->centroid(0, i), b->centroid(1, j), b->centroid(2, k)});
+      const double r = std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
+      if (r < r_min) {
+        r_min = r;
+        centre[0] = rho(i, j, k), centre[1] = alpha(i, j, k), centre[2] = psi(i, j, k);
+      }
+      maxima[0] = std::max(maxima[0], rho(i, j, k));
+      maxima[1] = std::max(maxima[1], -alpha(i, j, k));
+      maxima[2] = std::max(maxima[2], psi(i, j, k));
+      mass += D(i, j, k) * b->cell_volume(i, j, k);
+    });
+  }
+  MPI_Comm comm = ctx.grid().comm();
+  double r_global;
+  MPI_Allreduce(&r_min, &r_global, 1, MPI_DOUBLE, MPI_MIN, comm);
+  // The rank(s) holding the nearest cell contribute its values (ties are mirror cells: equal values).
+  double mine[3];
+  for (int c = 0; c < 3; ++c) mine[c] = r_min == r_global ? centre[c] : -inf;
+  double cg[3], mg[3], mass_g;
+  MPI_Allreduce(mine, cg, 3, MPI_DOUBLE, MPI_MAX, comm);
+  MPI_Allreduce(maxima, mg, 3, MPI_DOUBLE, MPI_MAX, comm);
+  MPI_Allreduce(&mass, &mass_g, 1, MPI_DOUBLE, MPI_SUM, comm);
+  StarDiagnostics d;
+  d.iteration = ctx.iteration();
+  d.time = ctx.time();
+  d.rho_c = cg[0], d.alpha_c = cg[1], d.psi_c = cg[2];
+  d.rho_max = mg[0], d.alpha_min = -mg[1], d.psi_max = mg[2];
+  d.rest_mass = mass_g;
+  return d;
+}
+
+const char* tsv_header() { return "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\n"; }
+
+std::string tsv_line(const StarDiagnostics& d) {
+  char b[512];
+  std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
+                static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
+                d.psi_max, d.rest_mass);
+  return b;
+}
+
+}  // namespace remnant::analysis

@@ -1,0 +1,80 @@
+// GRMHD hydro benchmarks on one 3D Cartesian block holding a static TOV star (octant, 40% of the
+// cells inside the star at n = 32), ideal gas and the SFHo table. "zone-cycles/s" = cells x RK3 steps per
+// second on one core (a step: 3 x (fluxes + divergence/sources + update + con2prim)), as Athena++
+// counts them. Ghost exchange is the Grid's and not included.
+//
+//   bench_GRMHD                                   all benchmarks
+//   bench_GRMHD --zone-cost=ideal|sfho STEPS      run STEPS steps and exit (for callgrind; see README)
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "star_block.hpp"
+
+namespace {
+
+using remnant::grmhd::bench::StarBlock;
+namespace eos = remnant::eos;
+
+eos::EOS make(const std::string& which) {
+  eos::EosConfig c;
+  if (which == "sfho") {
+    c.type = "tabulated";
+    c.table_file = std::string(REMNANT_SHARED_EOS_DIR) + "/SFHo_reduced_39r_39t_20y.h5";
+  } else {
+    c.type = "ideal_gas";
+    c.gamma = 2.0;
+    c.T_max = 1e6;
+  }
+  return eos::make_eos(c);
+}
+
+constexpr double kExtent = 12.0;  // octant edge; the star's isotropic radius is about 8.1
+
+void BM_Step(benchmark::State& st, const std::string& which) {
+  const int n = static_cast<int>(st.range(0));
+  StarBlock sb(make(which), n, kExtent);
+  const double dt = 0.3 * kExtent / n / 0.6;
+  for (auto _ : st) sb.step(dt);
+  st.SetItemsProcessed(st.iterations() * sb.cells());
+  st.counters["zone-cycles/s"] = benchmark::Counter(double(st.iterations() * sb.cells()), benchmark::Counter::kIsRate);
+}
+
+void BM_Part(benchmark::State& st, const std::string& which, int part) {
+  const int n = static_cast<int>(st.range(0));
+  StarBlock sb(make(which), n, kExtent);
+  for (auto _ : st) {
+    if (part == 0) sb.recover();
+    else if (part == 1) sb.fluxes();
+    else sb.divergence();
+  }
+  st.SetItemsProcessed(st.iterations() * sb.cells());
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(BM_Step, ideal_gas, std::string("ideal"))->Arg(16)->Arg(32)->Arg(48)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Step, sfho, std::string("sfho"))->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_Part, con2prim_ideal_gas, std::string("ideal"), 0)->Arg(32)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Part, fluxes_ideal_gas, std::string("ideal"), 1)->Arg(32)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Part, divergence_sources, std::string("ideal"), 2)->Arg(32)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Part, con2prim_sfho, std::string("sfho"), 0)->Arg(32)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Part, fluxes_sfho, std::string("sfho"), 1)->Arg(32)->Unit(benchmark::kMicrosecond);
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i)
+    if (std::strncmp(argv[i], "--zone-cost=", 12) == 0) {
+      const std::string which = argv[i] + 12;
+      const int steps = i + 1 < argc ? std::atoi(argv[i + 1]) : 2;
+      StarBlock sb(make(which), 32, kExtent);
+      for (int s = 0; s < steps; ++s) sb.step(0.3 * kExtent / 32 / 0.6);
+      std::printf("%d steps of %lld cells (%s)\n", steps, static_cast<long long>(sb.cells()), which.c_str());
+      return 0;
+    }
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,80 @@
+#pragma once
+// One-dimensional reconstruction of cell averages to the two sides of every face of a line.
+// Convention: q[c] is cell c (ghosts at negative c and c >= n); face f lies between cells f-1 and f.
+// left[f] is the state just left of face f (right edge of cell f-1), right[f] the state just right
+// of it (left edge of cell f), for f = 0..n. PPM needs 3 ghost cells, MC and minmod need 2.
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace remnant::grmhd {
+
+enum class Reconstruction { ppm, mc, minmod };
+
+inline Reconstruction parse_reconstruction(const std::string& s) {
+  if (s == "mc") return Reconstruction::mc;
+  if (s == "minmod") return Reconstruction::minmod;
+  return Reconstruction::ppm;
+}
+inline int ghosts_needed(Reconstruction r) { return r == Reconstruction::ppm ? 3 : 2; }
+
+namespace detail {
+
+inline double minmod(double a, double b) {
+  return a * b <= 0 ? 0.0 : (std::abs(a) < std::abs(b) ? a : b);
+}
+// Monotonised central limiter (van Leer 1977).
+inline double mc_slope(double dm, double dp) {
+  if (dm * dp <= 0) return 0.0;
+  const double s = dm > 0 ? 1.0 : -1.0;
+  return s * std::min({2.0 * std::abs(dm), 2.0 * std::abs(dp), 0.5 * std::abs(dm + dp)});
+}
+
+}  // namespace detail
+
+// Piecewise-linear reconstruction with the MC or minmod slope.
+template <bool UseMC>
+inline void reconstruct_plm(const double* q, double* left, double* right, int n) {
+  for (int c = -1; c <= n; ++c) {
+    const double dm = q[c] - q[c - 1], dp = q[c + 1] - q[c];
+    const double half = 0.5 * (UseMC ? detail::mc_slope(dm, dp) : detail::minmod(dm, dp));
+    if (c >= 0) right[c] = q[c] - half;
+    if (c < n) left[c + 1] = q[c] + half;
+  }
+}
+
+// PPM of Colella & Woodward (1984): fourth-order face values limited to the neighbouring cells,
+// then the parabola's monotonicity constraints (their eqs. 1.10). No steepening or flattening.
+// `face` is scratch for n + 3 values.
+inline void reconstruct_ppm(const double* q, double* left, double* right, int n, double* face) {
+  double* a = face + 1;  // a[f] for f = -1 .. n+1
+  for (int f = -1; f <= n + 1; ++f) {
+    const double lo = q[f - 1], hi = q[f];
+    double v = (7.0 / 12.0) * (lo + hi) - (1.0 / 12.0) * (q[f - 2] + q[f + 1]);
+    v = std::clamp(v, std::min(lo, hi), std::max(lo, hi));
+    a[f] = v;
+  }
+  for (int c = -1; c <= n; ++c) {
+    const double qc = q[c];
+    double aL = a[c], aR = a[c + 1];
+    if ((aR - qc) * (qc - aL) <= 0) {
+      aL = aR = qc;  // local extremum: flat
+    } else {
+      const double d = aR - aL, m6 = 6.0 * (qc - 0.5 * (aL + aR));
+      if (d * m6 > d * d) aL = 3.0 * qc - 2.0 * aR;
+      else if (-d * d > d * m6) aR = 3.0 * qc - 2.0 * aL;
+    }
+    if (c >= 0) right[c] = aL;
+    if (c < n) left[c + 1] = aR;
+  }
+}
+
+inline void reconstruct(Reconstruction r, const double* q, double* left, double* right, int n, double* scratch) {
+  switch (r) {
+    case Reconstruction::ppm: reconstruct_ppm(q, left, right, n, scratch); break;
+    case Reconstruction::mc: reconstruct_plm<true>(q, left, right, n); break;
+    case Reconstruction::minmod: reconstruct_plm<false>(q, left, right, n); break;
+  }
+}
+
+}  // namespace remnant::grmhd

@@ -1,0 +1,128 @@
+#include "con2prim_sweep.hpp"
+
+#include "Con2Prim/error_policy.hpp"
+#include "Con2Prim/prim_to_cons.hpp"
+#include "Con2Prim/recover.hpp"
+#include "GRMHD/valencia.hpp"
+#include "cell_geometry.hpp"
+
+#include <cstdio>
+
+namespace remnant::grmhd {
+namespace {
+
+// gamma_ij = psi^4 f_ii at a cell centre, in the form con2prim takes.
+con2prim::Metric3 cell_metric(double psi4, const std::array<double, 3>& f) {
+  const double a = psi4 * f[0], b = psi4 * f[1], c = psi4 * f[2];
+  return con2prim::Metric3::from_lower_and_inverse({a, 0, 0, b, 0, c}, {1 / a, 0, 0, 1 / b, 0, 1 / c}, a * b * c);
+}
+
+struct CellAccess {
+  Field prim[kNumPrim], met[kNumMetric], cons[kNumCons];
+  CellAccess(const Groups& g, Block& b) {
+    for (int c = 0; c < kNumPrim; ++c) prim[c] = b.field(g.prim, c);
+    for (int c = 0; c < kNumMetric; ++c) met[c] = b.field(g.metric, c);
+    for (int c = 0; c < kNumCons; ++c) cons[c] = b.field(g.cons, c);
+  }
+  void store_prim(std::ptrdiff_t o, const con2prim::Primitives& p) const {
+    prim[kRho].origin[o] = p.rho;
+    for (int c = 0; c < 3; ++c) prim[kVel1 + c].origin[o] = p.v[c];
+    prim[kEps].origin[o] = p.eps;
+    prim[kPress].origin[o] = p.press;
+    prim[kTemp].origin[o] = p.T;
+    prim[kYe].origin[o] = p.ye;
+    prim[kLorentz].origin[o] = p.W;
+    prim[kCs2].origin[o] = p.cs2;
+  }
+  void store_cons(std::ptrdiff_t o, const con2prim::Conserved& c, double psi6) const {
+    cons[0].origin[o] = psi6 * c.D;
+    for (int i = 0; i < 3; ++i) cons[1 + i].origin[o] = psi6 * c.S[i];
+    cons[4].origin[o] = psi6 * c.tau;
+    cons[5].origin[o] = psi6 * c.DYe;
+  }
+};
+
+template <class F>
+void for_cells(Block& b, const CellAccess& acc, F&& f) {
+  const bool cartesian = b.coordinates == CoordinateSystem::cartesian;
+  std::array<double, 3> fd{1, 1, 1};
+  for (int k = 0; k < b.n[2]; ++k)
+    for (int j = 0; j < b.n[1]; ++j)
+      for (int i = 0; i < b.n[0]; ++i) {
+        const std::ptrdiff_t o = i + j * acc.met[0].sj + k * acc.met[0].sk;
+        if (!cartesian) fd = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k));
+        const double psi = acc.met[kPsi].origin[o], p2 = psi * psi;
+        f(o, p2 * p2, p2 * p2 * p2, fd);
+      }
+}
+
+template <class E>
+void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm, const Groups& g,
+                  Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell) {
+  const CellAccess acc(g, b);
+  for_cells(b, acc, [&](std::ptrdiff_t o, double psi4, double psi6, const std::array<double, 3>& fd) {
+    const double ipsi6 = 1.0 / psi6;
+    con2prim::Conserved c;
+    c.D = acc.cons[0].origin[o] * ipsi6;
+    for (int i = 0; i < 3; ++i) c.S[i] = acc.cons[1 + i].origin[o] * ipsi6;
+    c.tau = acc.cons[4].origin[o] * ipsi6;
+    c.DYe = acc.cons[5].origin[o] * ipsi6;
+    con2prim::Primitives p;
+    p.T = acc.prim[kTemp].origin[o];
+    const con2prim::Report r = con2prim::recover(eos, s, atm, cell_metric(psi4, fd), c, p);
+    diag.add(r);
+    if (r.fatal() && fatal_cell.empty()) {
+      const std::ptrdiff_t i = o % acc.met[0].sj, j = (o / acc.met[0].sj) % (acc.met[0].sk / acc.met[0].sj),
+                           k = o / acc.met[0].sk;
+      char m[400];
+      std::snprintf(m, sizeof m, "block %lld cell (%td,%td,%td) at (%g, %g, %g): D=%g S=(%g,%g,%g) tau=%g -> rho=%g eps=%g T=%g W=%g rules=0x%x",
+                    static_cast<long long>(b.gid), i, j, k, b.x(0, int(i)), b.x(1, int(j)), b.x(2, int(k)), c.D,
+                    c.S[0], c.S[1], c.S[2], c.tau, p.rho, p.eps, p.T, p.W, r.rules);
+      fatal_cell = m;
+    }
+    acc.store_prim(o, p);
+    acc.store_cons(o, c, psi6);
+  });
+}
+
+template <class E>
+void prim_to_cons_impl(const E& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
+                       const Groups& g, Block& b,
+                       con2prim::Diagnostics& diag) {
+  const CellAccess acc(g, b);
+  for_cells(b, acc, [&](std::ptrdiff_t o, double psi4, double psi6, const std::array<double, 3>& fd) {
+    con2prim::Primitives p;
+    p.rho = acc.prim[kRho].origin[o];
+    for (int i = 0; i < 3; ++i) p.v[i] = acc.prim[kVel1 + i].origin[o];
+    p.eps = acc.prim[kEps].origin[o];
+    p.ye = acc.prim[kYe].origin[o];
+    p.T = acc.prim[kTemp].origin[o];
+    const con2prim::Metric3 m = cell_metric(psi4, fd);
+    if (atm.is_atmosphere(p.rho)) {
+      atm.set(p);
+    } else {
+      p.W = 1.0 / std::sqrt(1.0 - m.norm2_up(p.v));
+      diag.add_rules(con2prim::apply_error_policy(eos, s.policy, p, con2prim::ThermoInput::eps));
+      const eos::Thermo th = eos.thermo(p.rho, p.T, p.ye);
+      p.press = th.press;
+      p.cs2 = th.cs2;
+      p.eps = th.eps;
+    }
+    acc.store_prim(o, p);
+    acc.store_cons(o, con2prim::prim_to_cons(p, m), psi6);
+  });
+}
+
+}  // namespace
+
+void recover_block(const eos::EOS& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
+                   const Groups& g, Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell) {
+  eos.visit([&](const auto& e) { recover_impl(e, s, atm, g, b, diag, fatal_cell); });
+}
+
+void prim_to_cons_block(const eos::EOS& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
+                        const Groups& g, Block& b, con2prim::Diagnostics& diag) {
+  eos.visit([&](const auto& e) { prim_to_cons_impl(e, s, atm, g, b, diag); });
+}
+
+}  // namespace remnant::grmhd

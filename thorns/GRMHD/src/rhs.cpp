@@ -1,0 +1,259 @@
+// GRMHD right-hand side. Pass 1: for each direction, lines of cells are gathered into contiguous
+// buffers, reconstructed (rho, W v^i, p or T, Ye), completed by the EOS and turned into HLL flux
+// densities psi^6 F at the faces. Pass 2 (after the Grid's flux correction): flux divergence with
+// exact face areas and volumes, plus sources, cell by cell with i fastest.
+#include "rhs.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "GRMHD/face_thermo.hpp"
+#include "GRMHD/sources.hpp"
+#include "GRMHD/valencia.hpp"
+#include "cell_geometry.hpp"
+
+namespace remnant::grmhd {
+namespace {
+
+// Reconstructed variables: rho, W v^1, W v^2, W v^3, thermal (p or T), Ye.
+inline constexpr int kNumRec = 6;
+
+struct LineScratch {
+  int cap = 0;
+  std::vector<double> storage;
+  double* cell[kNumRec];    // cell values, offset so that [0] is the first interior cell
+  double* left[kNumRec];    // faces 0..n
+  double* right[kNumRec];
+  double* met[kNumMetric];  // cell metric along the line
+  double* flux[kNumCons];   // face fluxes (weighted)
+  double* ppm;              // reconstruction scratch
+  int ng = 0;
+  void ensure(int n, int ngh) {
+    const int len = n + 2 * ngh + 4;
+    if (len <= cap && ngh == ng) return;
+    cap = len;
+    ng = ngh;
+    const int arrays = kNumRec * 3 + kNumMetric + kNumCons + 1;
+    storage.assign(static_cast<std::size_t>(arrays) * static_cast<std::size_t>(len), 0.0);
+    double* p = storage.data();
+    auto take = [&](int offset) {
+      double* q = p + offset;
+      p += len;
+      return q;
+    };
+    for (double*& a : cell) a = take(ngh + 1);
+    for (double*& a : left) a = take(1);
+    for (double*& a : right) a = take(1);
+    for (double*& a : met) a = take(ngh + 1);
+    for (double*& a : flux) a = take(1);
+    ppm = take(1);
+  }
+};
+
+double face_value(MetricFaceInterpolation m, const double* a, int f) {
+  if (m == MetricFaceInterpolation::cubic)
+    return (9.0 * (a[f - 1] + a[f]) - (a[f - 2] + a[f + 1])) * (1.0 / 16.0);
+  return 0.5 * (a[f - 1] + a[f]);
+}
+
+template <class E>
+void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, int d, LineScratch& L) {
+  const int n = b.n[d], ng = b.ng[d];
+  L.ensure(n, ng);
+  Field prim[kNumPrim], met[kNumMetric], fout[kNumCons];
+  for (int c = 0; c < kNumPrim; ++c) prim[c] = b.field(g.prim, c);
+  for (int c = 0; c < kNumMetric; ++c) met[c] = b.field(g.metric, c);
+  for (int c = 0; c < kNumCons; ++c) fout[c] = b.field(g.flux[d], c);
+  const std::ptrdiff_t stride = d == 0 ? 1 : d == 1 ? prim[0].sj : prim[0].sk;
+  const std::ptrdiff_t fstride = d == 0 ? 1 : d == 1 ? fout[0].sj : fout[0].sk;
+  // The two transverse directions.
+  const int a = d == 0 ? 1 : 0, c2 = d == 2 ? 1 : 2;
+  const CoordinateSystem cs = b.coordinates;
+  const bool cartesian = cs == CoordinateSystem::cartesian;
+
+  for (int ic = 0; ic < b.n[c2]; ++ic)
+    for (int ia = 0; ia < b.n[a]; ++ia) {
+      int idx[3];
+      idx[d] = 0;
+      idx[a] = ia;
+      idx[c2] = ic;
+      const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
+      const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
+      // Gather.
+      {
+        const double* pr = prim[kRho].origin + base;
+        const double* pw = prim[kLorentz].origin + base;
+        const double* pv[3] = {prim[kVel1].origin + base, prim[kVel2].origin + base, prim[kVel3].origin + base};
+        const double* pth = (reconstructs_pressure<E> ? prim[kPress] : prim[kTemp]).origin + base;
+        const double* pye = prim[kYe].origin + base;
+        for (int m = -ng; m < n + ng; ++m) {
+          const std::ptrdiff_t o = m * stride;
+          const double W = pw[o];
+          L.cell[0][m] = pr[o];
+          L.cell[1][m] = W * pv[0][o];
+          L.cell[2][m] = W * pv[1][o];
+          L.cell[3][m] = W * pv[2][o];
+          L.cell[4][m] = pth[o];
+          L.cell[5][m] = pye[o];
+        }
+        for (int c = 0; c < kNumMetric; ++c) {
+          const double* pm = met[c].origin + base;
+          double* out = L.met[c];
+          for (int m = -ng; m < n + ng; ++m) out[m] = pm[m * stride];
+        }
+      }
+      for (int q = 0; q < kNumRec; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
+
+      // Transverse coordinates of this line (for f_ij at faces).
+      Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
+      std::array<double, 3> fd{1.0, 1.0, 1.0};
+      for (int f = 0; f <= n; ++f) {
+        const double psi = face_value(s.metric_faces, L.met[kPsi], f);
+        const double alpha = face_value(s.metric_faces, L.met[kAlpha], f);
+        std::array<double, 3> beta{face_value(s.metric_faces, L.met[kBeta1], f),
+                                   face_value(s.metric_faces, L.met[kBeta2], f),
+                                   face_value(s.metric_faces, L.met[kBeta3], f)};
+        if (!cartesian) {
+          x[d] = b.face_coordinate(d, f);
+          fd = coords::metric_diagonal(cs, x);
+        }
+        const PointMetric pm = cartesian ? point_metric_cartesian(psi, alpha, beta) : point_metric(psi, alpha, beta, fd);
+        FluidState sl, sr;
+        sl.rho = L.left[0][f];
+        sr.rho = L.right[0][f];
+        sl.ye = L.left[5][f];
+        sr.ye = L.right[5][f];
+        set_velocity_from_wv(sl, pm, L.left[1][f], L.left[2][f], L.left[3][f]);
+        set_velocity_from_wv(sr, pm, L.right[1][f], L.right[2][f], L.right[3][f]);
+        complete_face_thermo(eos, sl, L.left[4][f]);
+        complete_face_thermo(eos, sr, L.right[4][f]);
+        double ul[kNumCons], ur[kNumCons], fl[kNumCons], fr[kNumCons], fh[kNumCons];
+        conserved(sl, ul);
+        conserved(sr, ur);
+        flux(d, sl, pm, ul, fl);
+        flux(d, sr, pm, ur, fr);
+        double lml, lpl, lmr, lpr;
+        characteristic_speeds(d, sl, pm, lml, lpl);
+        characteristic_speeds(d, sr, pm, lmr, lpr);
+        hll_flux(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
+        const double p2 = psi * psi;
+        const double psi6 = p2 * p2 * p2;
+        for (int c = 0; c < kNumCons; ++c) L.flux[c][f] = fh[c] * psi6;
+      }
+      for (int c = 0; c < kNumCons; ++c) {
+        const double* F = L.flux[c];
+        double* fo = fout[c].origin + fbase;
+        for (int f = 0; f <= n; ++f) fo[f * fstride] = F[f];
+      }
+    }
+}
+
+// Pass 2 over the cells of a block, i fastest.
+void divergence_and_sources(const Groups& g, Block& b) {
+  Field prim[kNumPrim], met[kNumMetric], rhs[kNumCons], flux[3][kNumCons];
+  for (int c = 0; c < kNumPrim; ++c) prim[c] = b.field(g.prim, c);
+  for (int c = 0; c < kNumMetric; ++c) met[c] = b.field(g.metric, c);
+  for (int c = 0; c < kNumCons; ++c) rhs[c] = b.field(g.cons_rhs, c);
+  const CoordinateSystem cs = b.coordinates;
+  const bool cartesian = cs == CoordinateSystem::cartesian;
+  bool used[3];
+  std::array<double, 3> inv2dx{0, 0, 0};
+  const std::array<std::ptrdiff_t, 3> st{1, met[0].sj, met[0].sk};
+  std::array<std::ptrdiff_t, 3> fst{};
+  for (int d = 0; d < 3; ++d) {
+    used[d] = direction_used(b, d);
+    if (!used[d]) continue;
+    inv2dx[d] = 0.5 / b.dx[d];
+    for (int c = 0; c < kNumCons; ++c) flux[d][c] = b.field(g.flux[d], c);
+    fst[d] = d == 0 ? 1 : d == 1 ? flux[d][0].sj : flux[d][0].sk;
+  }
+  // The shift terms cost a Christoffel evaluation: only where beta is not zero in this block.
+  bool shift = false;
+  {
+    const std::size_t np = b.points_per_component(g.metric);
+    const double* p = b.data(g.metric) + static_cast<std::size_t>(kBeta1) * np;
+    for (std::size_t i = 0; i < 3 * np && !shift; ++i) shift = p[i] != 0.0;
+  }
+  const double* ff[3] = {b.face_factors(0), b.face_factors(1), b.face_factors(2)};
+  const double* vw[3] = {b.volume_weights(0), b.volume_weights(1), b.volume_weights(2)};
+  std::array<std::array<double, 3>, 3> df{};
+  Point3 fd{1.0, 1.0, 1.0};
+  Christoffels gam{};
+  for (int k = 0; k < b.n[2]; ++k)
+    for (int j = 0; j < b.n[1]; ++j)
+      for (int i = 0; i < b.n[0]; ++i) {
+        const int id[3] = {i, j, k};
+        const std::ptrdiff_t o = i + j * met[0].sj + k * met[0].sk;
+        double out[kNumCons] = {0, 0, 0, 0, 0, 0};
+        // Flux divergence: (A+ F+ - A- F-) / V with A/V reduced to the 1D factors of direction d.
+        for (int d = 0; d < 3; ++d) {
+          if (!used[d]) continue;
+          const std::ptrdiff_t fo = i + j * flux[d][0].sj + k * flux[d][0].sk;
+          const double ap = ff[d][id[d] + 1], am = ff[d][id[d]], iv = 1.0 / vw[d][id[d]];
+          for (int c = 0; c < kNumCons; ++c) {
+            const double* F = flux[d][c].origin + fo;
+            out[c] -= (ap * F[fst[d]] - am * F[0]) * iv;
+          }
+        }
+        const double psi = met[kPsi].origin[o], alpha = met[kAlpha].origin[o];
+        const std::array<double, 3> beta{met[kBeta1].origin[o], met[kBeta2].origin[o], met[kBeta3].origin[o]};
+        if (!cartesian) {
+          const Point3 x = cell_point(b, i, j, k);
+          fd = coords::metric_diagonal(cs, x);
+          gam = coords::christoffels(cs, x);
+          df = metric_diagonal_derivatives(fd, gam);
+        }
+        const PointMetric pm = point_metric(psi, alpha, beta, fd);
+        MetricDerivatives dm;
+        for (int d = 0; d < 3; ++d) {
+          if (!used[d]) continue;
+          const std::ptrdiff_t s = st[d];
+          dm.dpsi[d] = (met[kPsi].origin[o + s] - met[kPsi].origin[o - s]) * inv2dx[d];
+          dm.dalpha[d] = (met[kAlpha].origin[o + s] - met[kAlpha].origin[o - s]) * inv2dx[d];
+          if (shift)
+            for (int c = 0; c < 3; ++c)
+              dm.dbeta[d][c] = (met[kBeta1 + c].origin[o + s] - met[kBeta1 + c].origin[o - s]) * inv2dx[d];
+        }
+        FluidState fs;
+        fs.rho = prim[kRho].origin[o];
+        fs.press = prim[kPress].origin[o];
+        fs.eps = prim[kEps].origin[o];
+        fs.h = 1.0 + fs.eps + fs.press / fs.rho;
+        fs.W = prim[kLorentz].origin[o];
+        for (int c = 0; c < 3; ++c) {
+          fs.v[c] = prim[kVel1 + c].origin[o];
+          fs.v_dn[c] = pm.g_dn[c] * fs.v[c];
+        }
+        fs.v2 = fs.v[0] * fs.v_dn[0] + fs.v[1] * fs.v_dn[1] + fs.v[2] * fs.v_dn[2];
+        double src[kNumCons];
+        gravity_sources(fs, pm, psi, dm, df, cartesian ? nullptr : &gam, shift, src);
+        // Pressure part of the geometric source with the exact cell average of d_d ln sqrt(f),
+        // (A+ - A-) / V, which balances a uniform pressure in the divergence to round-off.
+        if (!cartesian) {
+          const double ap = alpha * fs.press;
+          for (int d = 0; d < 3; ++d)
+            if (used[d]) src[kS1 + d] += ap * (ff[d][id[d] + 1] - ff[d][id[d]]) / vw[d][id[d]];
+        }
+        const double p2 = psi * psi, psi6 = p2 * p2 * p2;
+        rhs[kD].origin[o] = out[kD];
+        rhs[kDYe].origin[o] = out[kDYe];
+        for (int c = kS1; c <= kTau; ++c) rhs[c].origin[o] = out[c] + psi6 * src[c];
+      }
+}
+
+template <class E>
+void block_fluxes(const E& eos, const RhsSettings& s, const Groups& g, Block& b) {
+  thread_local LineScratch scratch;
+  for (int d = 0; d < 3; ++d)
+    if (direction_used(b, d)) sweep_direction(eos, s, g, b, d, scratch);
+}
+
+}  // namespace
+
+void compute_block_fluxes(const eos::EOS& eos, const RhsSettings& s, const Groups& g, Block& b) {
+  eos.visit([&](const auto& e) { block_fluxes(e, s, g, b); });
+}
+
+void compute_block_rhs(const Groups& g, Block& b) { divergence_and_sources(g, b); }
+
+}  // namespace remnant::grmhd

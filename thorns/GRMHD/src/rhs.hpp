@@ -1,0 +1,23 @@
+#pragma once
+// The GRMHD right-hand side of one block in two passes, so that the Grid can correct the face
+// fluxes at refinement boundaries in between (refluxing).
+#include "GRMHD/reconstruction.hpp"
+#include "EOS/eos.hpp"
+#include "grid_access.hpp"
+
+namespace remnant::grmhd {
+
+enum class MetricFaceInterpolation { linear, cubic };
+
+struct RhsSettings {
+  Reconstruction reconstruction = Reconstruction::ppm;
+  MetricFaceInterpolation metric_faces = MetricFaceInterpolation::linear;
+};
+
+// Pass 1: the HLL flux densities psi^6 F^d on every interior face, into flux_x/y/z (per unit face
+// area, as GridDriver::correct_fluxes expects).
+void compute_block_fluxes(const eos::EOS& eos, const RhsSettings& s, const Groups& g, Block& b);
+// Pass 2: cons_rhs = -(flux divergence with exact face areas and volumes) + psi^6 sources.
+void compute_block_rhs(const Groups& g, Block& b);
+
+}  // namespace remnant::grmhd

@@ -1,0 +1,176 @@
+#include "regrid.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <set>
+
+#include "ghost_plan.hpp"
+#include "remnant/error.hpp"
+#include "transfer.hpp"
+
+namespace remnant::grid {
+
+namespace {
+
+enum class Source { same, parent, children };
+
+struct Origin {
+  Source kind;
+  std::vector<std::int64_t> old_gids;
+};
+
+Origin origin_of(const Forest& old_forest, const BlockKey& k) {
+  const int dim = old_forest.dimension();
+  if (const auto g = old_forest.find(k.level, k.index); g >= 0) return {Source::same, {g}};
+  if (k.level > 0) {
+    BlockIndex p = k.index;
+    for (int d = 0; d < dim; ++d) p[static_cast<std::size_t>(d)] /= 2;
+    if (const auto g = old_forest.find(k.level - 1, p); g >= 0) return {Source::parent, {g}};
+  }
+  Origin o{Source::children, {}};
+  const int cz = dim >= 3 ? 2 : 1, cy = dim >= 2 ? 2 : 1;
+  for (int c2 = 0; c2 < cz; ++c2)
+    for (int c1 = 0; c1 < cy; ++c1)
+      for (int c0 = 0; c0 < 2; ++c0) {
+        const int c[3] = {c0, c1, c2};
+        BlockIndex ch = k.index;
+        for (int d = 0; d < dim; ++d) ch[static_cast<std::size_t>(d)] = 2 * k.index[static_cast<std::size_t>(d)] + c[d];
+        const auto g = old_forest.find(k.level + 1, ch);
+        if (g < 0) throw RunError("Grid: regrid: a new block has no source on the old mesh (more than one level apart)");
+        o.old_gids.push_back(g);
+      }
+  return o;
+}
+
+std::size_t block_doubles(const Block& b, const VariableRegistry& vars) {
+  std::size_t n = 0;
+  for (int g = 0; g < vars.size(); ++g) n += b.size(g);
+  return n;
+}
+
+Range origin_points(const Forest& f, const BlockKey& k) {
+  Range o{};
+  for (std::size_t d = 0; d < 3; ++d) o[d] = k.index[d] * f.block_cells()[d];
+  return o;
+}
+
+}  // namespace
+
+std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std::span<Block* const> old_blocks,
+                                                   const Forest& new_forest, const BlockFactory& make_new,
+                                                   const BlockFactory& make_scratch, const VariableRegistry& vars,
+                                                   const LevelGeometry& geometry, int rank, MPI_Comm comm) {
+  const std::int64_t old_first = old_forest.first_gid(rank), old_count = old_forest.block_count(rank);
+  const std::int64_t new_first = new_forest.first_gid(rank), new_count = new_forest.block_count(rank);
+  auto old_mine = [&](std::int64_t g) { return g >= old_first && g < old_first + old_count; };
+
+  // Who needs which old block: (old gid) per destination rank, and per source rank for mine.
+  std::map<int, std::set<std::int64_t>> to_send, to_receive;
+  std::vector<Origin> origins;
+  for (std::int64_t g = 0; g < new_forest.total_blocks(); ++g) {
+    const int dest = new_forest.owner(g);
+    Origin o = origin_of(old_forest, new_forest.key(g));
+    for (std::int64_t s : o.old_gids) {
+      const int src = old_forest.owner(s);
+      if (src == dest) continue;
+      if (src == rank) to_send[dest].insert(s);
+      if (dest == rank) to_receive[src].insert(s);
+    }
+    if (dest == rank) origins.push_back(std::move(o));
+  }
+
+  std::unique_ptr<Block> probe = make_scratch(0, BlockKey{});
+  const std::size_t per_block = block_doubles(*probe, vars);
+  std::vector<std::vector<double>> send_buffers, recv_buffers;
+  std::vector<MPI_Request> requests;
+  for (auto& [r, gids] : to_receive) {
+    recv_buffers.emplace_back(gids.size() * per_block);
+    requests.emplace_back();
+    MPI_Irecv(recv_buffers.back().data(), static_cast<int>(recv_buffers.back().size()), MPI_DOUBLE, r, 1, comm,
+              &requests.back());
+  }
+  for (auto& [r, gids] : to_send) {
+    send_buffers.emplace_back();
+    auto& buf = send_buffers.back();
+    buf.reserve(gids.size() * per_block);
+    for (std::int64_t g : gids) {
+      Block& b = *old_blocks[static_cast<std::size_t>(g - old_first)];
+      for (int v = 0; v < vars.size(); ++v) buf.insert(buf.end(), b.data(v), b.data(v) + b.size(v));
+    }
+    requests.emplace_back();
+    MPI_Isend(buf.data(), static_cast<int>(buf.size()), MPI_DOUBLE, r, 1, comm, &requests.back());
+  }
+  MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+
+  // Old blocks that arrived, as scratch blocks.
+  std::map<std::int64_t, std::unique_ptr<Block>> arrived;
+  std::size_t which = 0;
+  for (auto& [r, gids] : to_receive) {
+    const double* in = recv_buffers[which++].data();
+    for (std::int64_t g : gids) {
+      auto b = make_scratch(g, old_forest.key(g));
+      for (int v = 0; v < vars.size(); ++v) {
+        std::memcpy(b->data(v), in, b->size(v) * sizeof(double));
+        in += b->size(v);
+      }
+      arrived.emplace(g, std::move(b));
+    }
+  }
+  auto old_block = [&](std::int64_t g) -> Block& {
+    if (old_mine(g)) return *old_blocks[static_cast<std::size_t>(g - old_first)];
+    return *arrived.at(g);
+  };
+
+  std::vector<std::unique_ptr<Block>> out;
+  out.reserve(static_cast<std::size_t>(new_count));
+  for (std::int64_t i = 0; i < new_count; ++i) {
+    const std::int64_t gid = new_first + i;
+    const BlockKey& key = new_forest.key(gid);
+    auto nb = make_new(gid, key);
+    const Origin& o = origins[static_cast<std::size_t>(i)];
+    for (int v = 0; v < vars.size(); ++v) {
+      const auto& spec = vars.group(v);
+      if (o.kind == Source::same) {
+        Block& s = old_block(o.old_gids[0]);
+        std::memcpy(nb->data(v), s.data(v), s.size(v) * sizeof(double));
+        continue;
+      }
+      const auto stagger = effective_stagger(spec.centering, new_forest.dimension());
+      const GlobalBox interior = interior_box(new_forest, key, stagger);
+      for (std::int64_t src_gid : o.old_gids) {
+        const BlockKey& sk = old_forest.key(src_gid);
+        Transfer t;
+        t.kind = o.kind == Source::parent ? TransferKind::prolong : TransferKind::restrict;
+        t.src_gid = src_gid;
+        t.dst_gid = gid;
+        t.src_level = sk.level;
+        t.dst_level = key.level;
+        t.src_origin = origin_points(old_forest, sk);
+        t.dst_origin = origin_points(new_forest, key);
+        GlobalBox part = interior;
+        if (o.kind == Source::children) {
+          // The part of the parent that this child covers.
+          GlobalBox cover = interior_box(old_forest, sk, stagger);
+          for (int d = 0; d < new_forest.dimension(); ++d) {
+            const auto ud = static_cast<std::size_t>(d);
+            cover.lo[ud] = cover.lo[ud] / 2;
+            cover.hi[ud] = cover.lo[ud] + new_forest.block_cells()[ud] / 2 + (stagger[ud] ? 1 : 0);
+          }
+          part = intersect(interior, cover);
+        }
+        for (std::size_t d = 0; d < 3; ++d) {
+          t.dst_box.lo[d] = static_cast<int>(part.lo[d] - t.dst_origin[d]);
+          t.dst_box.hi[d] = static_cast<int>(part.hi[d] - t.dst_origin[d]);
+        }
+        Block& s = old_block(src_gid);
+        for (int c = 0; c < spec.ncomp(); ++c)
+          apply_transfer(t, s.field(v, c), nb->field(v, c), 1.0, stagger, new_forest.dimension(), geometry);
+      }
+    }
+    out.push_back(std::move(nb));
+  }
+  return out;
+}
+
+}  // namespace remnant::grid

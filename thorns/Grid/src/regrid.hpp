@@ -1,0 +1,27 @@
+#pragma once
+// Moving the data of one mesh onto the next after a regrid: blocks that stay are copied (to
+// whichever rank owns them now), new children are prolonged from their old parent, new parents
+// restricted from their old children. Whole old blocks travel, one message per pair of ranks;
+// every rank knows both meshes, so both sides agree on what moves without talking.
+#include <mpi.h>
+
+#include <functional>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "forest.hpp"
+#include "level_geometry.hpp"
+
+namespace remnant::grid {
+
+using BlockFactory = std::function<std::unique_ptr<Block>(std::int64_t gid, const BlockKey& key)>;
+
+// `old_blocks`: this rank's blocks of `old_forest` in gid order, with current ghosts (the
+// prolongation reads them). Returns this rank's blocks of `new_forest` in gid order. Collective.
+std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std::span<Block* const> old_blocks,
+                                                   const Forest& new_forest, const BlockFactory& make_new,
+                                                   const BlockFactory& make_scratch, const VariableRegistry& vars,
+                                                   const LevelGeometry& geometry, int rank, MPI_Comm comm);
+
+}  // namespace remnant::grid

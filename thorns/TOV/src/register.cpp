@@ -1,0 +1,90 @@
+// TOV_Initial: solve the star, then write prim (interior) and the metric (everywhere: no ghost sync
+// needed, and ghosts across the origin or an axis get the mirror point's values).
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "EOS/beta_equilibrium.hpp"
+#include "EOS/eos.hpp"
+#include "TOV/tov_solver.hpp"
+#include "remnant/context.hpp"
+#include "remnant/coordinates.hpp"
+#include "remnant/registrar.hpp"
+
+namespace remnant::tov {
+namespace {
+
+std::unique_ptr<ColdSlice> make_slice(const Context& ctx) {
+  if (ctx.param<std::string>("TOV", "eos_slice") == "polytrope")
+    return polytrope_slice(ctx.param<double>("TOV", "poly_K"), ctx.param<double>("TOV", "poly_gamma"),
+                           ctx.param<double>("TOV", "ye"));
+  const auto* table = ctx.service<eos::EOS>("eos").tabulated();
+  if (!table) throw RunError("TOV::eos_slice = tabulated_beta needs EOS::type = tabulated");
+  // A fine logarithmic density grid over the table, beta equilibrium at T_min.
+  const auto& b = table->bounds();
+  std::vector<double> rhos;
+  const int n = 800;
+  for (int i = 0; i < n; ++i) rhos.push_back(b.rho_min * std::pow(b.rho_max / b.rho_min, double(i) / (n - 1)));
+  rhos.back() = b.rho_max;
+  const eos::BetaSlice s = eos::beta_equilibrium_slice(*table, b.T_min, rhos);
+  return tabulated_slice(s.rho, s.press, s.eps, s.ye);
+}
+
+void initial(Context& ctx) {
+  const auto slice = make_slice(ctx);
+  const TovStar star(*slice, ctx.param<double>("TOV", "rho_central"),
+                     static_cast<int>(ctx.param<std::int64_t>("TOV", "samples")));
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "TOV: M = %.6f, M0 = %.6f, R = %.5f (areal), %.5f (isotropic), rho_c = %.6e, Hc = %.6f",
+                star.gravitational_mass(), star.rest_mass(), star.areal_radius(), star.isotropic_radius(),
+                ctx.param<double>("TOV", "rho_central"), star.central_log_enthalpy());
+  ctx.info(line);
+  const bool perturb = ctx.param<std::string>("TOV", "perturbation") == "radial_velocity";
+  const double amp = ctx.param<double>("TOV", "perturbation_amplitude");
+  const int prim = ctx.var("GRMHD::prim"), metric = ctx.var("Spacetime::metric");
+  for (Block* b : ctx.grid().local_blocks()) {
+    const CoordinateSystem cs = b->coordinates;
+    auto point = [&](int i, int j, int k) { return Point3{b->centroid(0, i), b->centroid(1, j), b->centroid(2, k)}; };
+    auto radius = [&](const Point3& x) {
+      const Point3 X = coords::to_cartesian(cs, x);
+      return std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
+    };
+    // Metric everywhere (ghosts included).
+    Field psi = b->field(metric, 0), alpha = b->field(metric, 1);
+    for (int k = -b->ng[2]; k < b->n[2] + b->ng[2]; ++k)
+      for (int j = -b->ng[1]; j < b->n[1] + b->ng[1]; ++j)
+        for (int i = -b->ng[0]; i < b->n[0] + b->ng[0]; ++i) {
+          const TovPoint p = star.at(radius(point(i, j, k)));
+          psi(i, j, k) = p.psi;
+          alpha(i, j, k) = p.alpha;
+          for (int c = 2; c < 5; ++c) b->field(metric, c)(i, j, k) = 0.0;
+        }
+    Field f[10];
+    for (int c = 0; c < 10; ++c) f[c] = b->field(prim, c);
+    for_interior(*b, [&](int i, int j, int k) {
+      const Point3 x = point(i, j, k);
+      const double r = radius(x);
+      const TovPoint p = star.at(r);
+      Point3 v{0, 0, 0};
+      if (perturb && p.inside && r > 0) {
+        const Point3 X = coords::to_cartesian(cs, x);
+        const double s = amp * std::sin(std::numbers::pi * r / star.isotropic_radius()) / r;
+        v = coords::vector_from_cartesian(cs, x, {s * X[0], s * X[1], s * X[2]});
+      }
+      f[0](i, j, k) = p.rho;
+      for (int c = 0; c < 3; ++c) f[1 + c](i, j, k) = v[c];
+      f[4](i, j, k) = p.eps;
+      f[5](i, j, k) = p.press;
+      f[6](i, j, k) = 0.0;  // T follows from eps in GRMHD_InitialCons
+      f[7](i, j, k) = p.ye;
+      f[8](i, j, k) = 1.0;
+      f[9](i, j, k) = 0.0;
+    });
+  }
+}
+
+}  // namespace
+}  // namespace remnant::tov
+
+REMNANT_REGISTER_THORN(TOV) { reg.function("TOV_Initial", remnant::tov::initial); }

@@ -1,0 +1,108 @@
+// Cost of xCFC solves of a BU0 star on the BU0-dyn grid (1D spherical 640 cells to r = 60) and the
+// migration grid (2D spherical 640 x 32): a cold solve (full multigrid, tolerance 1e-10) and a
+// warm-started evolution solve (tolerance 1e-6) after the matter changed by 1e-5 relative. The
+// counters give V-cycles per solve. Compare with one RK3 step of GRMHD on the same grid from the
+// run timers (README.md, "Benchmarks").
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "TOV/tov_solver.hpp"
+#include "XCFC/xcfc_system.hpp"
+
+namespace {
+
+using namespace remnant;
+using namespace remnant::xcfc;
+
+GridShape grid(int dim) {
+  GridShape s;
+  s.coordinates = CoordinateSystem::spherical;
+  s.dimension = dim;
+  s.n = {640, dim == 2 ? 32 : 1, 1};
+  s.lo = {0, 0, 0};
+  s.dx = {60.0 / 640, (dim == 2 ? 1.5707963267948966 : 3.141592653589793) / s.n[1], 6.283185307179586};
+  s.boundary = {{{Boundary::origin, Boundary::outer},
+                 {Boundary::axis, dim == 2 ? Boundary::reflect : Boundary::axis},
+                 {Boundary::outer, Boundary::outer}}};
+  return s;
+}
+
+struct Star {
+  std::vector<double> E, p;
+  VectorField S;
+  explicit Star(const GridShape& s) {
+    const auto slice = tov::polytrope_slice(100.0, 2.0, 0.5);
+    const tov::TovStar star(*slice, 1.28e-3);
+    E.resize(s.cells()), p.resize(s.cells());
+    for (auto& c : S) c.assign(s.cells(), 0.0);
+    std::size_t q = 0;
+    for (int j = 0; j < s.n[1]; ++j)
+      for (int i = 0; i < s.n[0]; ++i, ++q) {
+        const tov::TovPoint t = star.at(s.centre(0, i));
+        E[q] = std::pow(t.psi, 6) * t.rho * (1 + t.eps);
+        p[q] = t.press;
+        S[0][q] = 1e-8 * E[q] * std::sin(0.3 * s.centre(0, i));  // a small radial momentum
+      }
+  }
+};
+
+void solve_all(XcfcSolver& sv, const Star& m, XcfcState& st, const SolveSettings& set, XcfcStats& stats) {
+  sv.solve_conformal_factor(m.E, m.S, st, stats, set);
+  std::vector<double> Str(m.E.size());
+  for (std::size_t q = 0; q < Str.size(); ++q) Str[q] = 3 * std::pow(st.psi[q], 6) * m.p[q];
+  sv.solve_lapse_and_shift(m.E, m.S, Str, st, stats, set);
+}
+
+void count(benchmark::State& state, const XcfcStats& s) {
+  state.counters["Vcycles_X"] = s.X.cycles();
+  state.counters["Vcycles_psi"] = s.psi.cycles;
+  state.counters["Vcycles_alphapsi"] = s.alpha_psi.cycles;
+  state.counters["Vcycles_beta"] = s.beta.cycles();
+}
+
+void BM_ColdSolve(benchmark::State& state) {
+  const GridShape s = grid(static_cast<int>(state.range(0)));
+  XcfcSolver sv(s);
+  const Star m(s);
+  SolveSettings set;
+  set.tolerance = 1e-10;
+  set.full_multigrid = true;
+  XcfcStats stats;
+  for (auto _ : state) {
+    XcfcState st;
+    solve_all(sv, m, st, set, stats);
+  }
+  count(state, stats);
+}
+
+void BM_WarmSolve(benchmark::State& state) {
+  const GridShape s = grid(static_cast<int>(state.range(0)));
+  XcfcSolver sv(s);
+  Star m(s);
+  SolveSettings set;
+  set.tolerance = 1e-10;
+  set.full_multigrid = true;
+  XcfcStats stats;
+  XcfcState base;
+  solve_all(sv, m, base, set, stats);
+  set.tolerance = 1e-6;
+  set.full_multigrid = false;
+  int step = 0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    XcfcState st = base;
+    const double f = 1 + 1e-5 * std::sin(0.1 * ++step);
+    Star mm = m;
+    for (auto& e : mm.E) e *= f;
+    state.ResumeTiming();
+    solve_all(sv, mm, st, set, stats);
+  }
+  count(state, stats);
+}
+
+}  // namespace
+
+BENCHMARK(BM_ColdSolve)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WarmSolve)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK_MAIN();

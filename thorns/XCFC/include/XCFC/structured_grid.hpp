@@ -1,0 +1,44 @@
+#pragma once
+// The uniform grid the elliptic solver works on: the Grid's finest uniform level as one logically
+// rectangular array (every rank holds all of it; see README.md, "MPI"). Cell-centred, i fastest;
+// interior arrays have n0*n1*n2 entries. Unused directions have one cell.
+#include <array>
+#include <cstddef>
+
+#include "remnant/coordinates.hpp"
+
+namespace remnant::xcfc {
+
+// What lies beyond a face of the domain.
+enum class Boundary {
+  outer,    // far field: Robin (1/r^p fall-off) or Dirichlet values
+  reflect,  // symmetry plane (Cartesian planes, the spherical equator theta = pi/2)
+  axis,     // cylindrical R = 0, spherical theta = 0 or pi
+  origin    // spherical r = 0
+};
+
+struct GridShape {
+  CoordinateSystem coordinates = CoordinateSystem::cartesian;
+  int dimension = 3;
+  std::array<int, 3> n{1, 1, 1};
+  std::array<double, 3> lo{0, 0, 0};   // lower face coordinates
+  std::array<double, 3> dx{1, 1, 1};   // cell widths (used directions)
+  std::array<std::array<Boundary, 2>, 3> boundary{};  // [direction][lower, upper]
+
+  bool used(int d) const { return d < dimension; }
+  std::size_t cells() const { return static_cast<std::size_t>(n[0]) * n[1] * n[2]; }
+  double centre(int d, int i) const { return lo[d] + (i + 0.5) * dx[d]; }
+  double face(int d, int i) const { return lo[d] + i * dx[d]; }
+  // Where a cell's tensors are evaluated: unused theta is the equator, unused phi (2D axisymmetry)
+  // the meridional half-plane phi = 0.
+  Point3 point(int i, int j, int k) const;
+  // Point reflection through the spherical origin maps theta to pi - theta unless the domain ends
+  // at the equator with a reflection (then the mirror cell has the same theta index).
+  bool origin_flips_theta() const;
+};
+
+// Parity of a field at each symmetry face: +1 even, -1 odd. Outer faces ignore it.
+using Parities = std::array<std::array<double, 2>, 3>;
+inline constexpr Parities kEven{{{1, 1}, {1, 1}, {1, 1}}};
+
+}  // namespace remnant::xcfc

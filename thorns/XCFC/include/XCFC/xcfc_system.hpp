@@ -1,0 +1,58 @@
+#pragma once
+// The xCFC equations in the paper's order (section "The CFC approximation and extended-CFC scheme"):
+//   1. Lap X^i + (1/3) nabla^i nabla_j X^j = 8 pi f^ij S~_j
+//   2. A^ij = nabla^i X^j + nabla^j X^i - (2/3) f^ij nabla_k X^k
+//   3. Lap psi = -2 pi psi^-1 E~ - (1/8) psi^-7 A_ij A^ij
+//   4. (the caller recovers the primitives with the new psi and computes S~)
+//   5. Lap (alpha psi) = alpha psi [2 pi psi^-2 (E~ + 2 S~) + (7/8) psi^-8 A_ij A^ij]
+//   6. Lap beta^i + (1/3) nabla^i nabla_j beta^j = 16 pi alpha psi^-6 f^ij S~_j + 2 A^ij d_j(alpha psi^-6)
+// with E~ = psi^6 E, S~_j = psi^6 S_j, S~ = psi^6 S: the densitised conserved variables give E~ and
+// S~_j directly. Outer boundaries: psi, alpha psi -> 1 + C/r (Schwarzschild), vectors fall off.
+#include <array>
+#include <vector>
+
+#include "XCFC/multigrid.hpp"
+#include "XCFC/vector_poisson.hpp"
+
+namespace remnant::xcfc {
+
+struct XcfcStats {
+  VectorSolveStats X, beta;
+  SolveStats psi, alpha_psi;
+};
+
+// Everything the solver keeps between solves (warm starts) and returns.
+struct XcfcState {
+  std::vector<double> psi, alpha_psi;
+  VectorPotentials X_potentials, beta_potentials;
+  VectorField X, beta;                       // coordinate components
+  std::array<std::vector<double>, 6> A;      // A^ij: 00 01 02 11 12 22
+  std::vector<double> A2;                    // A_ij A^ij
+  std::vector<double> alpha() const;
+};
+
+class XcfcSolver {
+ public:
+  explicit XcfcSolver(const GridShape& shape);
+  const GridShape& shape() const { return mg_.shape(); }
+  Multigrid& multigrid() { return mg_; }
+
+  // Steps 1-3. S_dn: covariant coordinate components of S~_j.
+  void solve_conformal_factor(const std::vector<double>& E, const VectorField& S_dn, XcfcState& st,
+                              XcfcStats& stats, const SolveSettings& settings);
+  // Steps 5-6 (psi from step 3 in st). S_trace: S~.
+  void solve_lapse_and_shift(const std::vector<double>& E, const VectorField& S_dn, const std::vector<double>& S_trace,
+                             XcfcState& st, XcfcStats& stats, const SolveSettings& settings);
+  // Residual of the psi equation for the current psi and these sources, relative to its sources
+  // (the trigger of an early solve).
+  double conformal_factor_residual(const std::vector<double>& E, const XcfcState& st);
+
+ private:
+  void compute_A(XcfcState& st);
+  Multigrid mg_;
+};
+
+ScalarEquation conformal_factor_equation();
+ScalarEquation lapse_equation();
+
+}  // namespace remnant::xcfc

@@ -1,0 +1,94 @@
+// Geometry of the finite-volume Laplacian on one level: exact integrals of sqrt(f) f^dd over faces.
+#include "level.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace remnant::xcfc {
+namespace {
+
+// The cell integral of g_e: unused directions have weight 1 (the factor cancels between volumes and
+// face integrals).
+double weight(const GridShape& s, int e, int i) {
+  if (!s.used(e)) return 1.0;
+  return coords::volume_factor_integral(s.coordinates, e, s.face(e, i), s.face(e, i + 1));
+}
+
+// The integral over cell i in direction e of g_e m_de, where f^dd = prod_e m_de(x^e) (separable).
+double transverse_integral(const GridShape& s, int d, int e, int i) {
+  if (!s.used(e)) return 1.0;
+  const double a = s.face(e, i), b = s.face(e, i + 1);
+  const CoordinateSystem cs = s.coordinates;
+  if (cs == CoordinateSystem::spherical && e == 0 && d >= 1) return b - a;  // int r^2 / r^2 dr
+  const bool cyl_phi = cs == CoordinateSystem::cylindrical && d == 2 && e == 0;  // int R / R^2 dR
+  const bool sph_phi = cs == CoordinateSystem::spherical && d == 2 && e == 1;    // int sin / sin^2
+  if (cyl_phi) {
+    if (a > 0) return std::log(b / a);
+    const double c = coords::centroid(cs, e, a, b);
+    return weight(s, e, i) / (c * c);
+  }
+  if (sph_phi) {
+    if (a > 0 && b < std::numbers::pi) return std::log(std::tan(0.5 * b) / std::tan(0.5 * a));
+    const double sc = std::sin(coords::centroid(cs, e, a, b));
+    return weight(s, e, i) / (sc * sc);
+  }
+  return weight(s, e, i);
+}
+
+// The average of 1/x over [a, b] with weight x^p: int x^(p-1) / int x^p.
+double mean_inverse(double a, double b, int p) {
+  if (p == 1) return (b - a) / (0.5 * (b * b - a * a));
+  return (0.5 * (b * b - a * a)) / ((b * b * b - a * a * a) / 3.0);
+}
+
+}  // namespace
+
+Level::Level(const GridShape& s) : shape(s) {
+  for (int d = 0; d < 3; ++d) g[d] = s.used(d) ? 1 : 0;
+  st[0] = 1;
+  st[1] = s.n[0] + 2 * g[0];
+  st[2] = st[1] * (s.n[1] + 2 * g[1]);
+  ghosted_size = static_cast<std::size_t>(st[2]) * (s.n[2] + 2 * g[2]);
+  const std::size_t nc = cells();
+  volume.assign(nc, 0.0);
+  diagonal.assign(nc, 0.0);
+  for (int d = 0; d < 3; ++d) a_lo[d].assign(s.used(d) ? nc : 0, 0.0), a_hi[d].assign(s.used(d) ? nc : 0, 0.0);
+  for (auto& m : mode_k) m.assign(nc, 0.0);
+  const CoordinateSystem cs = s.coordinates;
+  for (int k = 0; k < s.n[2]; ++k)
+    for (int j = 0; j < s.n[1]; ++j)
+      for (int i = 0; i < s.n[0]; ++i) {
+        const std::size_t q = cell(i, j, k);
+        const std::array<int, 3> ijk{i, j, k};
+        const double vol = weight(s, 0, i) * weight(s, 1, j) * weight(s, 2, k);
+        volume[q] = vol;
+        double diag = 0;
+        for (int d = 0; d < 3; ++d) {
+          if (!s.used(d)) continue;
+          double t = 1.0;
+          for (int e = 0; e < 3; ++e)
+            if (e != d) t *= transverse_integral(s, d, e, ijk[e]);
+          const double c = t / (s.dx[d] * vol);
+          a_lo[d][q] = c * coords::volume_factor(cs, d, s.face(d, ijk[d]));
+          a_hi[d][q] = c * coords::volume_factor(cs, d, s.face(d, ijk[d] + 1));
+          diag += a_lo[d][q] + a_hi[d][q];
+        }
+        diagonal[q] = diag;
+        // Point terms of the angular modes, exact for a field linear in varpi (or r) near the axis:
+        // k = <1/varpi> / varpi_centre with <.> the sqrt(f)-weighted cell average.
+        const double a0 = s.face(0, i), b0 = s.face(0, i + 1);
+        const Point3 x = s.point(i, j, k);
+        if (cs == CoordinateSystem::cylindrical && s.dimension <= 2)
+          mode_k[static_cast<int>(AngularMode::axisymmetric_m1)][q] = mean_inverse(a0, b0, 1) / x[0];
+        if (cs == CoordinateSystem::spherical && s.dimension == 2) {
+          const double a1 = s.face(1, j), b1 = s.face(1, j + 1);
+          const double mean_inv_sin = (b1 - a1) / weight(s, 1, j);
+          mode_k[static_cast<int>(AngularMode::axisymmetric_m1)][q] =
+              mean_inverse(a0, b0, 2) * mean_inv_sin / (x[0] * std::sin(x[1]));
+        }
+        if (cs == CoordinateSystem::spherical && s.dimension == 1)
+          mode_k[static_cast<int>(AngularMode::spherical_l1)][q] = 2.0 * mean_inverse(a0, b0, 2) / x[0];
+      }
+}
+
+}  // namespace remnant::xcfc

@@ -1,0 +1,36 @@
+#pragma once
+// One multigrid level: geometry coefficients of the finite-volume Laplacian and work arrays.
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "XCFC/multigrid.hpp"
+
+namespace remnant::xcfc {
+
+struct Level {
+  GridShape shape;
+  std::array<int, 3> g{0, 0, 0};                 // ghost layers (1 in used directions)
+  std::array<std::ptrdiff_t, 3> st{1, 0, 0};      // strides of ghosted arrays
+  std::size_t ghosted_size = 0;
+  std::array<int, 3> ratio{1, 1, 1};              // coarsening to the next level, per direction
+  std::vector<double> volume;                     // exact cell volumes (interior)
+  // Coefficients of u at the lower and upper neighbour in direction d: face integral of
+  // sqrt(f) f^dd / (dx_d * volume).
+  std::array<std::vector<double>, 3> a_lo, a_hi;
+  std::vector<double> diagonal;                   // sum of the a's
+  std::array<std::vector<double>, 3> mode_k;      // point coefficient of each AngularMode
+
+  // Equation on this level (interior arrays) and work arrays.
+  std::vector<double> k, s0, s1, s7, f, r;
+  std::vector<double> u, ubar;                    // ghosted
+
+  explicit Level(const GridShape& s);
+  std::size_t cells() const { return shape.cells(); }
+  std::ptrdiff_t at(int i, int j, int k) const { return (i + g[0]) + (j + g[1]) * st[1] + (k + g[2]) * st[2]; }
+  std::size_t cell(int i, int j, int k) const {
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(shape.n[0]) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(shape.n[1]) * k);
+  }
+};
+
+}  // namespace remnant::xcfc

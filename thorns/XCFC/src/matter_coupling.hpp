@@ -1,0 +1,25 @@
+#pragma once
+// The matter side of the xCFC sequence on the local blocks: the sources from GRMHD's densitised
+// conserved variables, the primitive recovery with the new psi (Con2Prim's pointwise recovery, the
+// same sweep as GRMHD's), and the conserved variables of given primitives (initial data). The
+// component layouts are those GRMHD's thorn.yaml declares.
+#include <cstdint>
+
+#include "remnant/context.hpp"
+
+namespace remnant::xcfc {
+
+struct MatterGroups {
+  int cons = -1, prim = -1, metric = -1;
+  static MatterGroups of(const Context& ctx);
+};
+
+// Recovers prim from cons with the metric's (new) psi; rewrites cons (atmosphere, policy). Returns
+// the number of cells where a fatal policy rule fired on this rank.
+std::uint64_t recover_primitives(Context& ctx, const MatterGroups& g);
+// cons = psi^6 * cons(prim, psi^4 f) on the interior.
+void conserved_from_primitives(Context& ctx, const MatterGroups& g);
+// S~ = psi^6 S = S^_i v^i + 3 psi^6 p at a cell (S^_i the densitised momentum).
+double densitised_stress_trace(Block& b, const MatterGroups& g, int i, int j, int k);
+
+}  // namespace remnant::xcfc

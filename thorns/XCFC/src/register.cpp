@@ -1,0 +1,226 @@
+// XCFC: binds the scheduled functions of thorn.yaml. The sequence per solve (paper's order):
+// X^i -> A^ij -> psi -> con2prim with the new psi -> alpha psi -> beta^i; the metric goes to
+// Spacetime::metric (GRMHD interpolates it to faces in each RHS evaluation).
+#include <mpi.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <numbers>
+#include <sstream>
+
+#include "XCFC/xcfc_system.hpp"
+#include "grid_bridge.hpp"
+#include "matter_coupling.hpp"
+#include "remnant/context.hpp"
+#include "remnant/registrar.hpp"
+
+namespace remnant::xcfc {
+namespace {
+
+// Kept between calls; everything a bit-identical continuation needs is either on the grid
+// (Spacetime::metric, XCFC::potentials: the warm starts) or in the persistent counters.
+struct Runtime {
+  std::unique_ptr<XcfcSolver> solver;
+  GridShape shape;
+  std::int64_t steps_since_solve = 0, solves = 0;
+};
+
+Runtime& runtime() {
+  static Runtime r;
+  return r;
+}
+
+XcfcSolver& solver(Context& ctx) {
+  Runtime& rt = runtime();
+  const GridShape s = shape_of_grid(ctx);
+  if (!rt.solver || s.n != rt.shape.n || s.coordinates != rt.shape.coordinates || s.dimension != rt.shape.dimension) {
+    rt.shape = s;
+    rt.solver = std::make_unique<XcfcSolver>(s);
+  }
+  return *rt.solver;
+}
+
+SolveSettings settings(const Context& ctx, bool initial) {
+  SolveSettings s;
+  s.tolerance = ctx.param<double>("XCFC", initial ? "tolerance_initial" : "tolerance");
+  s.max_cycles = static_cast<int>(ctx.param<std::int64_t>("XCFC", "max_cycles"));
+  s.pre_sweeps = s.post_sweeps = static_cast<int>(ctx.param<std::int64_t>("XCFC", "sweeps"));
+  s.full_multigrid = initial;
+  return s;
+}
+
+// Warm starts and the groups of one solve.
+struct Sources {
+  std::vector<double> E;
+  VectorField S;
+};
+
+Sources gather_sources(const GridBridge& br, const MatterGroups& g) {
+  Sources s;
+  s.E = br.gather_cells([&](Block& b, int i, int j, int k) { return b.field(g.cons, 0)(i, j, k) + b.field(g.cons, 4)(i, j, k); });
+  for (int d = 0; d < 3; ++d) s.S[d] = br.gather(g.cons, 1 + d);
+  return s;
+}
+
+void load_warm_start(const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st) {
+  st.psi = br.gather(g.metric, 0);
+  st.alpha_psi = br.gather_cells([&](Block& b, int i, int j, int k) { return b.field(g.metric, 0)(i, j, k) * b.field(g.metric, 1)(i, j, k); });
+  for (int a = 0; a < 3; ++a) {
+    st.X_potentials.B[a] = br.gather(potentials, a);
+    st.beta_potentials.B[a] = br.gather(potentials, 4 + a);
+  }
+  st.X_potentials.chi = br.gather(potentials, 3);
+  st.beta_potentials.chi = br.gather(potentials, 7);
+}
+
+void store_lapse_shift(const GridBridge& br, const MatterGroups& g, int potentials, const XcfcState& st) {
+  br.scatter(st.alpha(), g.metric, 1);
+  for (int d = 0; d < 3; ++d) br.scatter(st.beta[d], g.metric, 2 + d);
+  for (int a = 0; a < 3; ++a) {
+    br.scatter(st.X_potentials.B[a], potentials, a);
+    br.scatter(st.beta_potentials.B[a], potentials, 4 + a);
+  }
+  br.scatter(st.X_potentials.chi, potentials, 3);
+  br.scatter(st.beta_potentials.chi, potentials, 7);
+}
+
+void check_fatal(Context& ctx, std::uint64_t fatal) {
+  std::uint64_t total = 0;
+  MPI_Allreduce(&fatal, &total, 1, MPI_UINT64_T, MPI_SUM, ctx.comm());
+  if (total > 0) throw RunError("XCFC: a fatal error-policy rule fired in " + std::to_string(total) + " cells in the recovery with the new psi");
+}
+
+void write_tsv(Context& ctx, const char* reason, const XcfcStats& s, double seconds) {
+  if (ctx.rank() != 0) return;
+  const std::string path = ctx.out_dir() + "/xcfc.tsv";
+  const bool fresh = runtime().solves == 1 && !ctx.recovered();
+  std::ofstream out(path, fresh ? std::ios::trunc : std::ios::app);
+  if (fresh)
+    out << "# iteration\ttime\treason\tX_cycles\tX_residual\tpsi_cycles\tpsi_residual\talphapsi_cycles\talphapsi_residual\t"
+           "beta_cycles\tbeta_residual\twall_s\n";
+  auto rel = [](const SolveStats& x) { return x.scale > 0 ? x.residual / x.scale : x.residual; };
+  char line[512];
+  std::snprintf(line, sizeof line, "%lld\t%.17g\t%s\t%d\t%.3e\t%d\t%.3e\t%d\t%.3e\t%d\t%.3e\t%.6f\n",
+                static_cast<long long>(ctx.iteration()), ctx.time(), reason, s.X.cycles(), s.X.residual(), s.psi.cycles,
+                rel(s.psi), s.alpha_psi.cycles, rel(s.alpha_psi), s.beta.cycles(), s.beta.residual(), seconds);
+  out << line;
+}
+
+void warn_unconverged(Context& ctx, const XcfcStats& s) {
+  if (!(s.X.converged() && s.psi.converged && s.alpha_psi.converged && s.beta.converged()))
+    ctx.warn("XCFC: a metric solve reached XCFC::max_cycles before the tolerance (see xcfc.tsv)");
+}
+
+// One xCFC solve with the densitised conserved variables held fixed (evolution and hand-off).
+void solve_sequence(Context& ctx, bool initial, const char* reason) {
+  const auto t0 = std::chrono::steady_clock::now();
+  XcfcSolver& sv = solver(ctx);
+  const GridBridge br(ctx, sv.shape());
+  const MatterGroups g = MatterGroups::of(ctx);
+  const int potentials = ctx.var("XCFC::potentials");
+  const SolveSettings set = settings(ctx, initial);
+  XcfcState st;
+  load_warm_start(br, g, potentials, st);
+  const Sources src = gather_sources(br, g);
+  XcfcStats stats;
+  sv.solve_conformal_factor(src.E, src.S, st, stats, set);
+  br.scatter(st.psi, g.metric, 0);
+  check_fatal(ctx, recover_primitives(ctx, g));
+  const Sources after = gather_sources(br, g);  // the recovery may have reset cells to atmosphere
+  const std::vector<double> S = br.gather_cells([&](Block& b, int i, int j, int k) { return densitised_stress_trace(b, g, i, j, k); });
+  sv.solve_lapse_and_shift(after.E, after.S, S, st, stats, set);
+  store_lapse_shift(br, g, potentials, st);
+  ++runtime().solves;
+  runtime().steps_since_solve = 0;
+  warn_unconverged(ctx, stats);
+  write_tsv(ctx, reason, stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
+// Initial data given as primitives: iterate psi with the primitives fixed (E~ = psi^6 E changes
+// with psi), then the lapse and shift.
+void solve_from_primitives(Context& ctx) {
+  const auto t0 = std::chrono::steady_clock::now();
+  XcfcSolver& sv = solver(ctx);
+  const GridBridge br(ctx, sv.shape());
+  const MatterGroups g = MatterGroups::of(ctx);
+  const int potentials = ctx.var("XCFC::potentials");
+  const SolveSettings set = settings(ctx, true);
+  XcfcState st;
+  load_warm_start(br, g, potentials, st);
+  XcfcStats stats;
+  const int max_iter = static_cast<int>(ctx.param<std::int64_t>("XCFC", "initial_iterations"));
+  double change = 0;
+  for (int it = 0; it < max_iter; ++it) {
+    conserved_from_primitives(ctx, g);
+    const Sources src = gather_sources(br, g);
+    const std::vector<double> old = st.psi;
+    sv.solve_conformal_factor(src.E, src.S, st, stats, set);
+    br.scatter(st.psi, g.metric, 0);
+    change = 0;
+    for (std::size_t q = 0; q < old.size(); ++q) change = std::max(change, std::abs(st.psi[q] - old[q]));
+    if (change <= set.tolerance) break;
+  }
+  char m[200];
+  std::snprintf(m, sizeof m, "XCFC: initial psi from the primitives, last change %.2e", change);
+  ctx.info(m);
+  conserved_from_primitives(ctx, g);
+  const Sources src = gather_sources(br, g);
+  const std::vector<double> S = br.gather_cells([&](Block& b, int i, int j, int k) { return densitised_stress_trace(b, g, i, j, k); });
+  sv.solve_lapse_and_shift(src.E, src.S, S, st, stats, set);
+  store_lapse_shift(br, g, potentials, st);
+  ++runtime().solves;
+  runtime().steps_since_solve = 0;
+  warn_unconverged(ctx, stats);
+  write_tsv(ctx, "initial", stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+}
+
+void initial(Context& ctx) {
+  runtime() = Runtime{};
+  const std::string& mode = ctx.param<std::string>("XCFC", "initial_metric");
+  if (mode == "from_primitives") solve_from_primitives(ctx);
+  else if (mode == "from_conserved") solve_sequence(ctx, true, "initial");
+}
+
+// Relative residual of the psi equation with the current matter (A^2 term left out: it is not
+// stored between solves, and its contribution is second order in the velocities).
+double psi_residual(Context& ctx) {
+  XcfcSolver& sv = solver(ctx);
+  const GridBridge br(ctx, sv.shape());
+  const MatterGroups g = MatterGroups::of(ctx);
+  XcfcState st;
+  st.psi = br.gather(g.metric, 0);
+  const Sources src = gather_sources(br, g);
+  return sv.conformal_factor_residual(src.E, st);
+}
+
+void prestep(Context& ctx) {
+  Runtime& rt = runtime();
+  const std::int64_t every = ctx.param<std::int64_t>("XCFC", "solve_every");
+  if (every <= 0) return;
+  ++rt.steps_since_solve;
+  if (rt.steps_since_solve >= every) return solve_sequence(ctx, false, "cadence");
+  const double trigger = ctx.param<double>("XCFC", "residual_trigger");
+  if (trigger > 0 && psi_residual(ctx) > trigger) solve_sequence(ctx, false, "residual");
+}
+
+}  // namespace
+}  // namespace remnant::xcfc
+
+REMNANT_REGISTER_THORN(XCFC) {
+  using namespace remnant::xcfc;
+  reg.function("XCFC_Initial", initial);
+  reg.function("XCFC_Solve", prestep);
+  reg.persistent_state(
+      [](remnant::Context&) {
+        std::ostringstream s;
+        s << runtime().steps_since_solve << ' ' << runtime().solves;
+        return s.str();
+      },
+      [](remnant::Context&, const std::string& text) {
+        std::istringstream s(text);
+        s >> runtime().steps_since_solve >> runtime().solves;
+      });
+}
