@@ -9,6 +9,7 @@
 
 #include <remnant/context.hpp>
 #include <remnant/registrar.hpp>
+#include <remnant_test/thorn_fixture.hpp>
 #include <remnant/thorn_spec.hpp>
 
 #include "Atmosphere/make_atmosphere.hpp"
@@ -17,16 +18,6 @@ void remnant_register_thorn_Atmosphere(remnant::ThornRegistrar&);
 
 namespace {
 
-// Mirrors remnant::ThornRegistrar: update when the framework adds a hook.
-struct Recorder : remnant::ThornRegistrar {
-  std::map<std::string, remnant::ScheduledFunction> fns;
-  void function(const std::string& n, remnant::ScheduledFunction f) override { fns[n] = std::move(f); }
-  void predicate(const std::string&, remnant::Predicate) override {}
-  void inverse_dt_limit(std::function<double(remnant::Context&)>) override {}
-  void termination_check(std::function<std::string(remnant::Context&)>) override {}
-  void progress_fraction(std::function<double(remnant::Context&)>) override {}
-  void grid_factory(std::function<std::unique_ptr<remnant::GridDriver>(const remnant::GridSetup&)>) override {}
-};
 
 remnant::ThornSpec spec() {
   const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/Atmosphere/thorn.yaml";
@@ -48,7 +39,7 @@ TEST(AtmosphereThorn, ThornYamlParsesAndRunsAfterEosStartup) {
   EXPECT_EQ(t.schedule[0].in, "startup");
   ASSERT_EQ(t.schedule[0].after.size(), 1u);
   EXPECT_EQ(t.schedule[0].after[0].name, "EOS_Startup");
-  Recorder r;
+  remnant::test::RecordingRegistrar r;
   remnant_register_thorn_Atmosphere(r);
   EXPECT_EQ(r.fns.count("Atmosphere_Startup"), 1u);
 }
@@ -58,7 +49,7 @@ TEST(AtmosphereThorn, StartupPublishesTheAtmosphere) {
   for (auto p : spec().parameters) params.declare(p);
   remnant::VariableRegistry vars;
   remnant::Context ctx(params, vars, MPI_COMM_WORLD);
-  Recorder r;
+  remnant::test::RecordingRegistrar r;
   remnant_register_thorn_Atmosphere(r);
   EXPECT_THROW(r.fns.at("Atmosphere_Startup")(ctx), remnant::RunError);  // no EOS service yet
 

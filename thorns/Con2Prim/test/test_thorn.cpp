@@ -5,6 +5,7 @@
 
 #include <remnant/context.hpp>
 #include <remnant/registrar.hpp>
+#include <remnant_test/thorn_fixture.hpp>
 #include <remnant/thorn_spec.hpp>
 
 #include "Con2Prim/settings.hpp"
@@ -15,16 +16,6 @@ void remnant_register_thorn_Con2Prim(remnant::ThornRegistrar&);
 
 namespace {
 
-// Mirrors remnant::ThornRegistrar: update when the framework adds a hook.
-struct Recorder : remnant::ThornRegistrar {
-  std::map<std::string, remnant::ScheduledFunction> fns;
-  void function(const std::string& n, remnant::ScheduledFunction f) override { fns[n] = std::move(f); }
-  void predicate(const std::string&, remnant::Predicate) override {}
-  void inverse_dt_limit(std::function<double(remnant::Context&)>) override {}
-  void termination_check(std::function<std::string(remnant::Context&)>) override {}
-  void progress_fraction(std::function<double(remnant::Context&)>) override {}
-  void grid_factory(std::function<std::unique_ptr<remnant::GridDriver>(const remnant::GridSetup&)>) override {}
-};
 
 remnant::ThornSpec spec() {
   const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/Con2Prim/thorn.yaml";
@@ -46,7 +37,7 @@ TEST(Con2PrimThorn, ThornYamlParsesAndDeclaresStartup) {
   EXPECT_EQ(t.schedule[0].in, "startup");
   ASSERT_EQ(t.schedule[0].after.size(), 1u);
   EXPECT_EQ(t.schedule[0].after[0].name, "Atmosphere_Startup");
-  Recorder r;
+  remnant::test::RecordingRegistrar r;
   remnant_register_thorn_Con2Prim(r);
   EXPECT_EQ(r.fns.count("Con2Prim_Startup"), 1u);
 }
@@ -57,7 +48,7 @@ TEST(Con2PrimThorn, StartupPublishesTheSettings) {
   for (auto p : spec().parameters) params.declare(p);
   remnant::VariableRegistry vars;
   remnant::Context ctx(params, vars, MPI_COMM_WORLD);
-  Recorder r;
+  remnant::test::RecordingRegistrar r;
   remnant_register_thorn_Con2Prim(r);
 
   r.fns.at("Con2Prim_Startup")(ctx);

@@ -6,6 +6,7 @@
 
 #include <remnant/context.hpp>
 #include <remnant/registrar.hpp>
+#include <remnant_test/thorn_fixture.hpp>
 #include <remnant/thorn_spec.hpp>
 
 #include "EOS/eos.hpp"
@@ -15,16 +16,6 @@ void remnant_register_thorn_EOS(remnant::ThornRegistrar&);
 
 namespace {
 
-// Mirrors remnant::ThornRegistrar: update when the framework adds a hook.
-struct Recorder : remnant::ThornRegistrar {
-  std::map<std::string, remnant::ScheduledFunction> fns;
-  void function(const std::string& n, remnant::ScheduledFunction f) override { fns[n] = std::move(f); }
-  void predicate(const std::string&, remnant::Predicate) override {}
-  void inverse_dt_limit(std::function<double(remnant::Context&)>) override {}
-  void termination_check(std::function<std::string(remnant::Context&)>) override {}
-  void progress_fraction(std::function<double(remnant::Context&)>) override {}
-  void grid_factory(std::function<std::unique_ptr<remnant::GridDriver>(const remnant::GridSetup&)>) override {}
-};
 
 remnant::ThornSpec spec() {
   const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/EOS/thorn.yaml";
@@ -43,7 +34,7 @@ TEST(EOSThorn, ThornYamlParsesAndDeclaresStartup) {
   EXPECT_EQ(t.provides[0], "eos");
   ASSERT_EQ(t.schedule.size(), 1u);
   EXPECT_EQ(t.schedule[0].name, "EOS_Startup");
-  Recorder r;
+  remnant::test::RecordingRegistrar r;
   remnant_register_thorn_EOS(r);
   EXPECT_EQ(r.fns.count("EOS_Startup"), 1u);
 }
@@ -55,7 +46,7 @@ TEST(EOSThorn, StartupPublishesTheEos) {
   for (auto p : spec().parameters) params.declare(p);
   remnant::VariableRegistry vars;
   remnant::Context ctx(params, vars, MPI_COMM_WORLD);
-  Recorder r;
+  remnant::test::RecordingRegistrar r;
   remnant_register_thorn_EOS(r);
 
   r.fns.at("EOS_Startup")(ctx);  // defaults: an ideal gas
