@@ -1,6 +1,7 @@
 // Geometry of the finite-volume Laplacian on one level: exact integrals of sqrt(f) f^dd over faces.
 #include "level.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -89,6 +90,32 @@ Level::Level(const GridShape& s) : shape(s) {
         if (cs == CoordinateSystem::spherical && s.dimension == 1)
           mode_k[static_cast<int>(AngularMode::spherical_l1)][q] = 2.0 * mean_inverse(a0, b0, 2) / x[0];
       }
+  for (double d : diagonal) max_diagonal = std::max(max_diagonal, d);
+  const int longest = std::max({s.n[0], s.n[1], s.n[2]});
+  for (auto* w : {&line_lo, &line_di, &line_up, &line_rhs}) w->assign(static_cast<std::size_t>(longest), 0.0);
+  for (int d = 0; d < 3; ++d) {
+    if (!s.used(d)) continue;
+    const int e1 = (d + 1) % 3, e2 = (d + 2) % 3;
+    for (int side = 0; side < 2; ++side) {
+      if (s.boundary[d][side] != Boundary::outer) continue;
+      auto &f1 = robin1[d][side], &f2 = robin2[d][side];
+      f1.assign(static_cast<std::size_t>(s.n[e1]) * s.n[e2], 0.0);
+      f2.assign(f1.size(), 0.0);
+      for (int t2 = 0; t2 < s.n[e2]; ++t2)
+        for (int t1 = 0; t1 < s.n[e1]; ++t1) {
+          std::array<int, 3> gi{}, m{};
+          gi[d] = side == 0 ? -1 : s.n[d], gi[e1] = t1, gi[e2] = t2;
+          m = gi;
+          m[d] = side == 0 ? 0 : s.n[d] - 1;
+          const Point3 Xi = coords::to_cartesian(cs, s.point(m[0], m[1], m[2]));
+          const Point3 Xg = coords::to_cartesian(cs, s.point(gi[0], gi[1], gi[2]));
+          const double ri = std::hypot(Xi[0], Xi[1], Xi[2]), rg = std::hypot(Xg[0], Xg[1], Xg[2]);
+          const std::size_t t = static_cast<std::size_t>(t1) + static_cast<std::size_t>(s.n[e1]) * t2;
+          f1[t] = std::pow(ri / rg, 1.0);
+          f2[t] = std::pow(ri / rg, 2.0);
+        }
+    }
+  }
 }
 
 }  // namespace remnant::xcfc

@@ -20,6 +20,13 @@ struct Level {
   std::array<std::vector<double>, 3> a_lo, a_hi;
   std::vector<double> diagonal;                   // sum of the a's
   std::array<std::vector<double>, 3> mode_k;      // point coefficient of each AngularMode
+  double max_diagonal = 0;                        // scale of the round-off floor of the residual
+  // Robin fall-off factors (r_inner / r_ghost)^p of the outer-face ghosts for p = 1 and 2, per
+  // [direction][side], indexed t1 + n[e1] * t2 over the face (e1, e2 = d+1, d+2 mod 3): geometry
+  // only, so computed once instead of per ghost fill.
+  std::array<std::array<std::vector<double>, 2>, 3> robin1, robin2;
+  std::vector<double> restrict_volume;            // sum of the fine volumes restricted into each cell
+  std::vector<double> line_lo, line_di, line_up, line_rhs;  // line-relaxation work (longest line)
 
   // Equation on this level (interior arrays) and work arrays.
   std::vector<double> k, s0, s1, s7, f, r;

@@ -33,6 +33,17 @@ struct Multigrid::Impl {
       levels.back().ratio = ratio;
       levels.emplace_back(c);
     }
+    // Restriction weights: the fine volumes summed per coarse cell (in the order of restriction).
+    for (std::size_t l = 0; l + 1 < levels.size(); ++l) {
+      const Level& F = levels[l];
+      Level& C = levels[l + 1];
+      C.restrict_volume.assign(C.cells(), 0.0);
+      const GridShape& fs = F.shape;
+      for (int k = 0; k < fs.n[2]; ++k)
+        for (int j = 0; j < fs.n[1]; ++j)
+          for (int i = 0; i < fs.n[0]; ++i)
+            C.restrict_volume[C.cell(i / F.ratio[0], j / F.ratio[1], k / F.ratio[2])] += F.volume[F.cell(i, j, k)];
+    }
   }
 
   // ---- boundary ghosts -------------------------------------------------------------------------
@@ -61,10 +72,11 @@ struct Multigrid::Impl {
                 ghost = (homogeneous ? 0.0 : 2.0 * eq.dirichlet(xf)) - inner;
               } else {
                 const double u_inf = homogeneous ? 0.0 : eq.far_value;
-                const Point3 Xi = coords::to_cartesian(s.coordinates, s.point(m[0], m[1], m[2]));
-                const Point3 Xg = coords::to_cartesian(s.coordinates, s.point(g[0], g[1], g[2]));
-                const double ri = std::hypot(Xi[0], Xi[1], Xi[2]), rg = std::hypot(Xg[0], Xg[1], Xg[2]);
-                ghost = u_inf + (inner - u_inf) * std::pow(ri / rg, eq.falloff);
+                const std::size_t t = static_cast<std::size_t>(t1) + static_cast<std::size_t>(s.n[e1]) * t2;
+                const double ratio = eq.falloff == 1.0   ? L.robin1[d][side][t]
+                                     : eq.falloff == 2.0 ? L.robin2[d][side][t]
+                                                         : std::pow(L.robin1[d][side][t], eq.falloff);
+                ghost = u_inf + (inner - u_inf) * ratio;
               }
               continue;
             }
@@ -142,7 +154,10 @@ struct Multigrid::Impl {
           const double u = L.u[static_cast<std::size_t>(L.at(i, j, k))];
           double t = std::abs(L.k[q] * u) + std::abs(L.s0[q]);
           if (!L.s1.empty()) t += std::abs(L.s1[q] / u);
-          if (!L.s7.empty()) t += std::abs(L.s7[q] / std::pow(u, 7));
+          if (!L.s7.empty()) {
+            const double u2 = u * u, u3 = u2 * u;
+            t += std::abs(L.s7[q] / (u3 * u3 * u));
+          }
           m = std::max(m, t);
         }
     return m;
@@ -181,7 +196,7 @@ struct Multigrid::Impl {
     const int n = s.n[d], e1 = (d + 1) % 3, e2 = (d + 2) % 3;
     double* u = L.u.data();
     const bool nonlinear = !L.s1.empty() || !L.s7.empty();
-    std::vector<double> lo(static_cast<std::size_t>(n)), di(lo), up(lo), rhs(lo);
+    double *lo = L.line_lo.data(), *di = L.line_di.data(), *up = L.line_up.data(), *rhs = L.line_rhs.data();
     for (int colour = 0; colour < 2; ++colour) {
       fill_ghosts(L, eq, L.u, false);
       for (int t2 = 0; t2 < s.n[e2]; ++t2)
@@ -246,9 +261,37 @@ struct Multigrid::Impl {
     }
   }
 
+  // Local relaxation next to the spherical origin (Brandt): the large coefficients there leave the
+  // largest residual after a red-black sweep, which otherwise dominates the L-infinity stopping
+  // test for V-cycles after the rest of the grid has converged.
+  static void relax_origin(Level& L, const ScalarEquation& eq) {
+    const GridShape& s = L.shape;
+    if (s.dimension != 1 || s.boundary[0][0] != Boundary::origin) return;
+    double* u = L.u.data();
+    const bool nonlinear = !L.s1.empty() || !L.s7.empty();
+    const int m = std::min(s.n[0], 4);
+    for (int pass = 0; pass < 2; ++pass) {
+      u[L.at(-1, 0, 0)] = eq.parity[0][0] * u[L.at(0, 0, 0)];
+      for (int i = 0; i < m; ++i) {
+        const std::size_t q = static_cast<std::size_t>(i);
+        const std::ptrdiff_t p = L.at(i, 0, 0);
+        const Cell c = neighbours(L, u, p, q);
+        const double uc = u[p];
+        const double res = c.sigma - c.diag * uc - source(L, q, uc) - L.f[q];
+        double un = uc - res / (-c.diag - source_derivative(L, q, uc));
+        if (nonlinear && !(un > 0.1 * uc)) un = 0.5 * uc;
+        u[p] = un;
+        if (i == 0) u[L.at(-1, 0, 0)] = eq.parity[0][0] * un;
+      }
+    }
+  }
+
   // Point red-black smoothing in 1D and isotropic 3D, alternating line smoothing in 2D.
   static void relax(Level& L, const ScalarEquation& eq, int sweeps) {
-    if (L.shape.dimension != 2) return smooth(L, eq, sweeps);
+    if (L.shape.dimension != 2) {
+      smooth(L, eq, sweeps);
+      return relax_origin(L, eq);
+    }
     for (int sweep = 0; sweep < sweeps; ++sweep)
       for (int d = 0; d < 2; ++d) smooth_lines(L, eq, d);
   }
@@ -258,31 +301,29 @@ struct Multigrid::Impl {
   static void restrict_interior(const Level& F, const Level& C, const std::vector<double>& fine,
                                 std::vector<double>& coarse) {
     coarse.assign(C.cells(), 0.0);
-    std::vector<double> vol(C.cells(), 0.0);
     const GridShape& s = F.shape;
     for (int k = 0; k < s.n[2]; ++k)
       for (int j = 0; j < s.n[1]; ++j)
         for (int i = 0; i < s.n[0]; ++i) {
           const std::size_t q = F.cell(i, j, k);
-          const std::size_t qc = C.cell(i / F.ratio[0], j / F.ratio[1], k / F.ratio[2]);
-          coarse[qc] += F.volume[q] * fine[q];
-          vol[qc] += F.volume[q];
+          coarse[C.cell(i / F.ratio[0], j / F.ratio[1], k / F.ratio[2])] += F.volume[q] * fine[q];
         }
-    for (std::size_t q = 0; q < coarse.size(); ++q) coarse[q] /= vol[q];
+    for (std::size_t q = 0; q < coarse.size(); ++q) coarse[q] /= C.restrict_volume[q];
   }
+  // The same from and to ghosted arrays (coarse ghosts zeroed, to be filled by the caller).
   static void restrict_ghosted(const Level& F, const Level& C, const std::vector<double>& fine,
                                std::vector<double>& coarse) {
-    std::vector<double> fi(F.cells()), ci;
+    coarse.assign(C.ghosted_size, 0.0);
     const GridShape& s = F.shape;
     for (int k = 0; k < s.n[2]; ++k)
       for (int j = 0; j < s.n[1]; ++j)
-        for (int i = 0; i < s.n[0]; ++i) fi[F.cell(i, j, k)] = fine[static_cast<std::size_t>(F.at(i, j, k))];
-    restrict_interior(F, C, fi, ci);
-    coarse.assign(C.ghosted_size, 0.0);
+        for (int i = 0; i < s.n[0]; ++i)
+          coarse[static_cast<std::size_t>(C.at(i / F.ratio[0], j / F.ratio[1], k / F.ratio[2]))] +=
+              F.volume[F.cell(i, j, k)] * fine[static_cast<std::size_t>(F.at(i, j, k))];
     const GridShape& c = C.shape;
     for (int k = 0; k < c.n[2]; ++k)
       for (int j = 0; j < c.n[1]; ++j)
-        for (int i = 0; i < c.n[0]; ++i) coarse[static_cast<std::size_t>(C.at(i, j, k))] = ci[C.cell(i, j, k)];
+        for (int i = 0; i < c.n[0]; ++i) coarse[static_cast<std::size_t>(C.at(i, j, k))] /= C.restrict_volume[C.cell(i, j, k)];
   }
   // Adds (or, with `replace`, writes) the linear interpolation of a ghosted coarse array: each fine
   // cell takes the coarse value plus a quarter of the central coarse slope per refined direction.
@@ -329,9 +370,8 @@ struct Multigrid::Impl {
     fill_ghosts(C, eq, C.u, false);
     C.ubar = C.u;
     restrict_interior(F, C, F.r, C.f);
-    std::vector<double> Au(C.cells());
-    apply(C, C.ubar, Au);
-    for (std::size_t q = 0; q < Au.size(); ++q) C.f[q] += Au[q];
+    apply(C, C.ubar, C.r);  // C.r as scratch: the coarse cycle recomputes it before use
+    for (std::size_t q = 0; q < C.r.size(); ++q) C.f[q] += C.r[q];
     vcycle(l + 1, eq, s);
     for (std::size_t p = 0; p < C.u.size(); ++p) C.ubar[p] = C.u[p] - C.ubar[p];
     fill_ghosts(C, eq, C.ubar, true);
@@ -432,8 +472,7 @@ SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, co
   // Round-off floor of the residual: the largest operator term times a few ulps. Near the spherical
   // origin and axis the coefficients are large and a relative 1e-10 can lie below it.
   auto floor = [&] {
-    double m = 0;
-    for (std::size_t q = 0; q < L.cells(); ++q) m = std::max(m, L.diagonal[q]);
+    const double m = L.max_diagonal;
     double umax = 0;
     for (double v : L.u) umax = std::max(umax, std::abs(v));
     return 256 * std::numeric_limits<double>::epsilon() * m * umax;
@@ -445,7 +484,11 @@ SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, co
     res = Impl::residual(L, eq);
     st.scale = scale();
     st.history.push_back(res);
-    if (std::getenv("XCFC_DEBUG")) std::fprintf(stderr, "cycle %d residual %.3e\n", st.cycles, res);
+    if (std::getenv("XCFC_DEBUG")) {
+      std::size_t at = 0;
+      for (std::size_t q = 0; q < L.r.size(); ++q) if (std::abs(L.r[q]) > std::abs(L.r[at])) at = q;
+      std::fprintf(stderr, "cycle %d residual %.3e at %zu (initial %.3e, target %.3e)\n", st.cycles, res, at, st.initial_residual, s.tolerance * st.scale);
+    }
   }
   st.residual = res;
   st.converged = res <= std::max(s.tolerance * st.scale, noise);
