@@ -12,7 +12,7 @@
 #include "EOS/eos.hpp"
 #include "TOV/tov_solver.hpp"
 #include "GRMHD/valencia.hpp"
-#include "con2prim_sweep.hpp"
+#include "GRMHD/con2prim_sweep.hpp"
 #include "remnant/grid.hpp"
 #include "rhs.hpp"
 

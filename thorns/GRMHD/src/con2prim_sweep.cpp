@@ -1,4 +1,4 @@
-#include "con2prim_sweep.hpp"
+#include "GRMHD/con2prim_sweep.hpp"
 
 #include "Con2Prim/error_policy.hpp"
 #include "Con2Prim/prim_to_cons.hpp"

@@ -6,7 +6,7 @@
 #include "Atmosphere/atmosphere.hpp"
 #include "Con2Prim/settings.hpp"
 #include "EOS/eos.hpp"
-#include "con2prim_sweep.hpp"
+#include "GRMHD/con2prim_sweep.hpp"
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
 #include "rhs.hpp"

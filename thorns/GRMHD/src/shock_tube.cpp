@@ -1,7 +1,7 @@
 #include "shock_tube.hpp"
 
 #include "EOS/eos.hpp"
-#include "grid_access.hpp"
+#include "GRMHD/grid_access.hpp"
 
 namespace remnant::grmhd {
 

@@ -1,6 +1,6 @@
 #pragma once
 // CFL limit from the matter's characteristic speeds: max over cells and directions of |lambda| / dx.
-#include "grid_access.hpp"
+#include "GRMHD/grid_access.hpp"
 
 namespace remnant::grmhd {
 

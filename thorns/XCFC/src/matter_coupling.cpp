@@ -2,14 +2,14 @@
 
 #include "Atmosphere/atmosphere.hpp"
 #include "Con2Prim/prim_to_cons.hpp"
-#include "Con2Prim/recover.hpp"
+#include "GRMHD/con2prim_sweep.hpp"
 #include "Con2Prim/settings.hpp"
 #include "EOS/eos.hpp"
 
 namespace remnant::xcfc {
 namespace {
 
-enum Prim : int { kRho = 0, kVel = 1, kEps = 4, kPress = 5, kTemp = 6, kYe = 7, kW = 8, kCs2 = 9 };
+using grmhd::kRho, grmhd::kVel1, grmhd::kEps, grmhd::kPress, grmhd::kTemp, grmhd::kYe, grmhd::kLorentz, grmhd::kCs2;
 enum Cons : int { kD = 0, kS = 1, kTau = 4, kDYe = 5 };
 
 con2prim::Metric3 cell_metric(const Block& b, double psi, int i, int j, int k) {
@@ -21,12 +21,12 @@ con2prim::Metric3 cell_metric(const Block& b, double psi, int i, int j, int k) {
 void store(Block& b, const MatterGroups& g, int i, int j, int k, const con2prim::Primitives& p,
            const con2prim::Conserved& c, double psi6) {
   b.field(g.prim, kRho)(i, j, k) = p.rho;
-  for (int d = 0; d < 3; ++d) b.field(g.prim, kVel + d)(i, j, k) = p.v[d];
+  for (int d = 0; d < 3; ++d) b.field(g.prim, kVel1 + d)(i, j, k) = p.v[d];
   b.field(g.prim, kEps)(i, j, k) = p.eps;
   b.field(g.prim, kPress)(i, j, k) = p.press;
   b.field(g.prim, kTemp)(i, j, k) = p.T;
   b.field(g.prim, kYe)(i, j, k) = p.ye;
-  b.field(g.prim, kW)(i, j, k) = p.W;
+  b.field(g.prim, kLorentz)(i, j, k) = p.W;
   b.field(g.prim, kCs2)(i, j, k) = p.cs2;
   b.field(g.cons, kD)(i, j, k) = psi6 * c.D;
   for (int d = 0; d < 3; ++d) b.field(g.cons, kS + d)(i, j, k) = psi6 * c.S[d];
@@ -41,29 +41,15 @@ MatterGroups MatterGroups::of(const Context& ctx) {
 }
 
 std::uint64_t recover_primitives(Context& ctx, const MatterGroups& g) {
+  // The same sweep GRMHD runs after every substep, now with the new psi in Spacetime::metric.
   const auto& eos = ctx.service<eos::EOS>("eos");
   const auto& s = ctx.service<con2prim::Settings>("con2prim");
   const auto& atm = ctx.service<atmosphere::Atmosphere>("atmosphere");
-  std::uint64_t fatal = 0;
-  for (Block* b : ctx.grid().local_blocks()) {
-    Field psi = b->field(g.metric, 0);
-    eos.visit([&](const auto& e) {
-      for_interior(*b, [&](int i, int j, int k) {
-        const double p = psi(i, j, k), p2 = p * p, psi6 = p2 * p2 * p2, inv = 1.0 / psi6;
-        con2prim::Conserved c;
-        c.D = b->field(g.cons, kD)(i, j, k) * inv;
-        for (int d = 0; d < 3; ++d) c.S[d] = b->field(g.cons, kS + d)(i, j, k) * inv;
-        c.tau = b->field(g.cons, kTau)(i, j, k) * inv;
-        c.DYe = b->field(g.cons, kDYe)(i, j, k) * inv;
-        con2prim::Primitives pr;
-        pr.T = b->field(g.prim, kTemp)(i, j, k);
-        const con2prim::Report r = con2prim::recover(e, s, atm, cell_metric(*b, p, i, j, k), c, pr);
-        fatal += r.fatal();
-        store(*b, g, i, j, k, pr, c, psi6);
-      });
-    });
-  }
-  return fatal;
+  const grmhd::Groups groups = grmhd::Groups::of(ctx);
+  con2prim::Diagnostics diag;
+  std::string first_fatal_cell;
+  for (Block* b : ctx.grid().local_blocks()) grmhd::recover_block(eos, s, atm, groups, *b, diag, first_fatal_cell);
+  return diag.fatal_cells;
 }
 
 void conserved_from_primitives(Context& ctx, const MatterGroups& g) {
@@ -74,7 +60,7 @@ void conserved_from_primitives(Context& ctx, const MatterGroups& g) {
       const con2prim::Metric3 m = cell_metric(*b, p, i, j, k);
       con2prim::Primitives pr;
       pr.rho = b->field(g.prim, kRho)(i, j, k);
-      for (int d = 0; d < 3; ++d) pr.v[d] = b->field(g.prim, kVel + d)(i, j, k);
+      for (int d = 0; d < 3; ++d) pr.v[d] = b->field(g.prim, kVel1 + d)(i, j, k);
       pr.eps = b->field(g.prim, kEps)(i, j, k);
       pr.press = b->field(g.prim, kPress)(i, j, k);
       pr.T = b->field(g.prim, kTemp)(i, j, k);
@@ -89,7 +75,7 @@ void conserved_from_primitives(Context& ctx, const MatterGroups& g) {
 double densitised_stress_trace(Block& b, const MatterGroups& g, int i, int j, int k) {
   const double psi = b.field(g.metric, 0)(i, j, k), p2 = psi * psi;
   double sv = 0;
-  for (int d = 0; d < 3; ++d) sv += b.field(g.cons, kS + d)(i, j, k) * b.field(g.prim, kVel + d)(i, j, k);
+  for (int d = 0; d < 3; ++d) sv += b.field(g.cons, kS + d)(i, j, k) * b.field(g.prim, kVel1 + d)(i, j, k);
   return sv + 3 * p2 * p2 * p2 * b.field(g.prim, kPress)(i, j, k);
 }
 

@@ -1,8 +1,7 @@
 #pragma once
 // The matter side of the xCFC sequence on the local blocks: the sources from GRMHD's densitised
-// conserved variables, the primitive recovery with the new psi (Con2Prim's pointwise recovery, the
-// same sweep as GRMHD's), and the conserved variables of given primitives (initial data). The
-// component layouts are those GRMHD's thorn.yaml declares.
+// conserved variables, the primitive recovery with the new psi (GRMHD's sweep), and the conserved
+// variables of given primitives (initial data), in the component layout of GRMHD/grid_access.hpp.
 #include <cstdint>
 
 #include "remnant/context.hpp"

@@ -7,7 +7,7 @@
 #include "EOS/eos.hpp"
 #include <string>
 
-#include "grid_access.hpp"
+#include "GRMHD/grid_access.hpp"
 
 namespace remnant::grmhd {
 
