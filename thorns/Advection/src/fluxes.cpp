@@ -3,19 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "remnant/limiters.hpp"
+
 namespace remnant::advection {
-
-namespace {
-
-double mc_slope(double um, double u0, double up, double xm, double x0, double xp) {
-  const double dl = (u0 - um) / (x0 - xm), dr = (up - u0) / (xp - x0);
-  if (!(dl * dr > 0)) return 0.0;
-  const double dc = (up - um) / (xp - xm);
-  const double m = std::min({std::abs(dc), 2 * std::abs(dl), 2 * std::abs(dr)});
-  return dc > 0 ? m : -m;
-}
-
-}  // namespace
 
 void face_fluxes(const Setup& s, Block& b, const Field& u, const Field& flux, int d) {
   const std::ptrdiff_t stride = d == 0 ? 1 : d == 1 ? u.sj : u.sk;

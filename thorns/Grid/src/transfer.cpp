@@ -3,20 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "remnant/limiters.hpp"
+
 namespace remnant::grid {
 
 namespace {
 
 std::int64_t floor_half(std::int64_t i) { return i >= 0 ? i / 2 : -((1 - i) / 2); }
-
-// Monotonised-central slope from three values at (non-uniformly spaced) centroids.
-double mc_slope(double um, double u0, double up, double xm, double x0, double xp) {
-  const double dl = (u0 - um) / (x0 - xm), dr = (up - u0) / (xp - x0);
-  if (!(dl * dr > 0)) return 0.0;
-  const double dc = (up - um) / (xp - xm);
-  const double m = std::min({std::abs(dc), 2 * std::abs(dl), 2 * std::abs(dr)});
-  return dc > 0 ? m : -m;
-}
 
 struct Kernel {
   const Transfer& t;
