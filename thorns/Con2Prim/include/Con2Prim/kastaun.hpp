@@ -19,19 +19,7 @@ namespace remnant::con2prim {
 template <class E>
 class KastaunSolver {
  public:
-  // The master function's value and the state it was computed from.
-  struct Eval {
-    double x = 0, f = 0;  // x = mu
-    double W = 1, rho0 = 0, eps = 0, T = 0;
-    std::uint32_t inv_flags = 0;
-    double rel_change(const Eval& o) const {
-      return std::max(std::abs(o.W - W) / W, std::abs(o.eps - eps) / std::abs(eps));
-    }
-    static Eval lerp(const Eval& a, const Eval& b, double t) {
-      auto mix = [t](double p, double q) { return p + t * (q - p); };
-      return {mix(a.x, b.x), 0.0, mix(a.W, b.W), mix(a.rho0, b.rho0), mix(a.eps, b.eps), mix(a.T, b.T), a.inv_flags};
-    }
-  };
+  using Eval = MasterEval;
 
   KastaunSolver(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye)
       : eos_(eos), b_(eos.bounds()), method_(s.eps_to_T), D_(c.D), ye_(ye) {

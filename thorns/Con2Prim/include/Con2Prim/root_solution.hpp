@@ -1,12 +1,28 @@
 #pragma once
 // What a master-function solver hands back to the recovery pipeline (recover.hpp): the fluid state at
 // its root, before the atmosphere check, the error policy and the final EOS call.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
 #include "Con2Prim/metric.hpp"
 
 namespace remnant::con2prim {
+
+// One master-function evaluation and the state it was computed from (Kastaun: x = mu;
+// Palenzuela: x = h W). Brent keeps whole records so that the root's state needs no recomputation.
+struct MasterEval {
+  double x = 0, f = 0;
+  double W = 1, rho0 = 0, eps = 0, T = 0;
+  std::uint32_t inv_flags = 0;
+  double rel_change(const MasterEval& o) const {
+    return std::max(std::abs(o.W - W) / W, std::abs(o.eps - eps) / std::abs(eps));
+  }
+  static MasterEval lerp(const MasterEval& a, const MasterEval& b, double t) {
+    auto mix = [t](double p, double q) { return p + t * (q - p); };
+    return {mix(a.x, b.x), 0.0, mix(a.W, b.W), mix(a.rho0, b.rho0), mix(a.eps, b.eps), mix(a.T, b.T), a.inv_flags};
+  }
+};
 
 struct RootSolution {
   double rho = 0;   // D / W, not clamped to the table (rule 1 needs the raw value)
