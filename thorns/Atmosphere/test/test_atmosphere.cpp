@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "remnant_test/shared_tables.hpp"
 #include "Atmosphere/make_atmosphere.hpp"
 #include "EOS/readers.hpp"
 #include "EOS/units.hpp"
@@ -15,7 +16,7 @@ namespace eos = remnant::eos;
 
 namespace {
 
-std::string shared_eos(const std::string& name) { return std::string(REMNANT_SHARED_EOS_DIR) + "/" + name; }
+using remnant::test::shared_eos;
 
 struct Prim {
   double rho = 1, v[3] = {0.1, 0.2, 0.3}, W = 2, eps = 1, press = 1, T = 1, ye = 0.2, cs2 = 0.1, B[3] = {1, 2, 3};

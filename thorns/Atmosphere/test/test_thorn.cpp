@@ -19,13 +19,7 @@ void remnant_register_thorn_Atmosphere(remnant::ThornRegistrar&);
 namespace {
 
 
-remnant::ThornSpec spec() {
-  const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/Atmosphere/thorn.yaml";
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return remnant::parse_thorn_spec(s.str(), path);
-}
+remnant::ThornSpec spec() { return remnant::test::thorn_spec_from_source(REMNANT_SOURCE_DIR, "Atmosphere"); }
 
 }  // namespace
 

@@ -8,6 +8,7 @@
 #include <random>
 #include <string>
 
+#include "remnant_test/shared_tables.hpp"
 #include "Con2Prim/metric.hpp"
 #include "Con2Prim/prim_to_cons.hpp"
 #include "Con2Prim/state.hpp"
@@ -15,18 +16,7 @@
 
 namespace c2p_test {
 
-inline std::string shared_eos(const std::string& name) {
-#ifdef REMNANT_SHARED_EOS_DIR
-  return std::string(REMNANT_SHARED_EOS_DIR) + "/" + name;
-#else
-  return "../shared/eos/" + name;
-#endif
-}
-
-#define REQUIRE_TABLE(path)                                                                \
-  do {                                                                                     \
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "EOS table not found: " << (path); \
-  } while (0)
+using remnant::test::shared_eos;
 
 inline double rel_err(double got, double want) {
   return want != 0 ? std::abs(got - want) / std::abs(want) : std::abs(got);

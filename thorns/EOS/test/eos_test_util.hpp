@@ -8,24 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "remnant_test/shared_tables.hpp"
 #include "EOS/table.hpp"
 #include "EOS/units.hpp"
 
 namespace eos_test {
 
-inline std::string shared_eos(const std::string& name) {
-#ifdef REMNANT_SHARED_EOS_DIR
-  return std::string(REMNANT_SHARED_EOS_DIR) + "/" + name;
-#else
-  return "../shared/eos/" + name;
-#endif
-}
-
-// Skips the test (with a message) when a shared table is missing.
-#define REQUIRE_TABLE(path)                                                            \
-  do {                                                                                 \
-    if (!std::filesystem::exists(path)) GTEST_SKIP() << "EOS table not found: " << (path); \
-  } while (0)
+using remnant::test::shared_eos;
 
 // A table whose interpolated quantities are linear in (ln rho, ln T, Ye).
 struct Linear {

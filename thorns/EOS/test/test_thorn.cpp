@@ -17,13 +17,7 @@ void remnant_register_thorn_EOS(remnant::ThornRegistrar&);
 namespace {
 
 
-remnant::ThornSpec spec() {
-  const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/EOS/thorn.yaml";
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return remnant::parse_thorn_spec(s.str(), path);
-}
+remnant::ThornSpec spec() { return remnant::test::thorn_spec_from_source(REMNANT_SOURCE_DIR, "EOS"); }
 
 }  // namespace
 
