@@ -5,8 +5,12 @@
 
 namespace remnant::wavetoy {
 
+enum class WaveKind { plane_wave, standing_wave, gaussian };
+// Throws std::invalid_argument for a name WaveToy::initial_data does not allow.
+WaveKind wave_kind(const std::string& name);
+
 struct WaveSetup {
-  std::string kind;                // plane_wave | standing_wave | gaussian
+  WaveKind kind = WaveKind::plane_wave;
   double amplitude = 1;
   std::array<double, 3> k{};       // wave vector (already times 2 pi)
   double speed = 1;

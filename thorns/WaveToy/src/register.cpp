@@ -12,7 +12,7 @@ constexpr double kTwoPi = 6.283185307179586476925286766559;
 
 WaveSetup setup_from(const Context& ctx) {
   WaveSetup s;
-  s.kind = ctx.param<std::string>("WaveToy", "initial_data");
+  s.kind = wave_kind(ctx.param<std::string>("WaveToy", "initial_data"));
   s.amplitude = ctx.param<double>("WaveToy", "amplitude");
   const auto& n = ctx.param<std::vector<double>>("WaveToy", "wave_numbers");
   for (int d = 0; d < 3; ++d) s.k[d] = kTwoPi * n[d];
