@@ -114,67 +114,67 @@ void warn_unconverged(Context& ctx, const XcfcStats& s) {
     ctx.warn("XCFC: a metric solve reached XCFC::max_cycles before the tolerance (see xcfc.tsv)");
 }
 
+// What every xCFC solve works with, set up from the warm start; finish() solves for alpha psi and
+// beta with the final matter and records the solve.
+struct Solve {
+  const std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
+  XcfcSolver& sv;
+  const GridBridge br;
+  const MatterGroups g;
+  const int potentials;
+  const SolveSettings set;
+  XcfcState st;
+  XcfcStats stats;
+
+  Solve(Context& ctx, bool initial)
+      : sv(solver(ctx)), br(ctx, sv.shape()), g(MatterGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
+        set(settings(ctx, initial)) {
+    load_warm_start(br, g, potentials, st);
+  }
+
+  void finish(Context& ctx, const Sources& src, const char* reason) {
+    const std::vector<double> S =
+        br.gather_cells([&](Block& b, int i, int j, int k) { return densitised_stress_trace(b, g, i, j, k); });
+    sv.solve_lapse_and_shift(src.E, src.S, S, st, stats, set);
+    store_lapse_shift(br, g, potentials, st);
+    ++runtime().solves;
+    runtime().steps_since_solve = 0;
+    warn_unconverged(ctx, stats);
+    write_tsv(ctx, reason, stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  }
+};
+
 // One xCFC solve with the densitised conserved variables held fixed (evolution and hand-off).
 void solve_sequence(Context& ctx, bool initial, const char* reason) {
-  const auto t0 = std::chrono::steady_clock::now();
-  XcfcSolver& sv = solver(ctx);
-  const GridBridge br(ctx, sv.shape());
-  const MatterGroups g = MatterGroups::of(ctx);
-  const int potentials = ctx.var("XCFC::potentials");
-  const SolveSettings set = settings(ctx, initial);
-  XcfcState st;
-  load_warm_start(br, g, potentials, st);
-  const Sources src = gather_sources(br, g);
-  XcfcStats stats;
-  sv.solve_conformal_factor(src.E, src.S, st, stats, set);
-  br.scatter(st.psi, g.metric, 0);
-  check_fatal(ctx, recover_primitives(ctx, g));
-  const Sources after = gather_sources(br, g);  // the recovery may have reset cells to atmosphere
-  const std::vector<double> S = br.gather_cells([&](Block& b, int i, int j, int k) { return densitised_stress_trace(b, g, i, j, k); });
-  sv.solve_lapse_and_shift(after.E, after.S, S, st, stats, set);
-  store_lapse_shift(br, g, potentials, st);
-  ++runtime().solves;
-  runtime().steps_since_solve = 0;
-  warn_unconverged(ctx, stats);
-  write_tsv(ctx, reason, stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  Solve s(ctx, initial);
+  const Sources src = gather_sources(s.br, s.g);
+  s.sv.solve_conformal_factor(src.E, src.S, s.st, s.stats, s.set);
+  s.br.scatter(s.st.psi, s.g.metric, 0);
+  check_fatal(ctx, recover_primitives(ctx, s.g));
+  s.finish(ctx, gather_sources(s.br, s.g), reason);  // the recovery may have reset cells to atmosphere
 }
 
 // Initial data given as primitives: iterate psi with the primitives fixed (E~ = psi^6 E changes
 // with psi), then the lapse and shift.
 void solve_from_primitives(Context& ctx) {
-  const auto t0 = std::chrono::steady_clock::now();
-  XcfcSolver& sv = solver(ctx);
-  const GridBridge br(ctx, sv.shape());
-  const MatterGroups g = MatterGroups::of(ctx);
-  const int potentials = ctx.var("XCFC::potentials");
-  const SolveSettings set = settings(ctx, true);
-  XcfcState st;
-  load_warm_start(br, g, potentials, st);
-  XcfcStats stats;
+  Solve s(ctx, true);
   const int max_iter = static_cast<int>(ctx.param<std::int64_t>("XCFC", "initial_iterations"));
   double change = 0;
   for (int it = 0; it < max_iter; ++it) {
-    conserved_from_primitives(ctx, g);
-    const Sources src = gather_sources(br, g);
-    const std::vector<double> old = st.psi;
-    sv.solve_conformal_factor(src.E, src.S, st, stats, set);
-    br.scatter(st.psi, g.metric, 0);
+    conserved_from_primitives(ctx, s.g);
+    const Sources src = gather_sources(s.br, s.g);
+    const std::vector<double> old = s.st.psi;
+    s.sv.solve_conformal_factor(src.E, src.S, s.st, s.stats, s.set);
+    s.br.scatter(s.st.psi, s.g.metric, 0);
     change = 0;
-    for (std::size_t q = 0; q < old.size(); ++q) change = std::max(change, std::abs(st.psi[q] - old[q]));
-    if (change <= set.tolerance) break;
+    for (std::size_t q = 0; q < old.size(); ++q) change = std::max(change, std::abs(s.st.psi[q] - old[q]));
+    if (change <= s.set.tolerance) break;
   }
   char m[200];
   std::snprintf(m, sizeof m, "XCFC: initial psi from the primitives, last change %.2e", change);
   ctx.info(m);
-  conserved_from_primitives(ctx, g);
-  const Sources src = gather_sources(br, g);
-  const std::vector<double> S = br.gather_cells([&](Block& b, int i, int j, int k) { return densitised_stress_trace(b, g, i, j, k); });
-  sv.solve_lapse_and_shift(src.E, src.S, S, st, stats, set);
-  store_lapse_shift(br, g, potentials, st);
-  ++runtime().solves;
-  runtime().steps_since_solve = 0;
-  warn_unconverged(ctx, stats);
-  write_tsv(ctx, "initial", stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+  conserved_from_primitives(ctx, s.g);
+  s.finish(ctx, gather_sources(s.br, s.g), "initial");
 }
 
 void initial(Context& ctx) {
