@@ -82,7 +82,12 @@ class Context {
   const std::string& termination_reason() const { return termination_reason_; }
   void set_termination_reason(std::string r) { termination_reason_ = std::move(r); }
   bool recovered() const { return recovered_; }
-  void set_recovered(bool r) { recovered_ = r; }
+  // The iteration the run was recovered at (set with set_recovered, after the clock was restored).
+  std::int64_t recovered_iteration() const { return recovered_iteration_; }
+  void set_recovered(bool r) {
+    recovered_ = r;
+    recovered_iteration_ = r ? clock_.iteration : 0;
+  }
 
   // Persistent thorn state for checkpoints: thorn name -> save/restore.
   struct PersistentState {
@@ -128,6 +133,7 @@ class Context {
   std::function<double()> inverse_dt_fn_;
   std::string termination_reason_;
   bool recovered_ = false;
+  std::int64_t recovered_iteration_ = 0;
   std::vector<PersistentState> persistent_states_;
   std::vector<std::string> active_thorns_;
   std::string resolved_parfile_;

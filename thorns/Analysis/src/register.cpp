@@ -4,6 +4,7 @@
 
 #include "Analysis/star_diagnostics.hpp"
 #include "remnant/registrar.hpp"
+#include "remnant/tsv_file.hpp"
 
 namespace remnant::analysis {
 namespace {
@@ -14,11 +15,10 @@ void star(Context& ctx) {
   const StarDiagnostics d = star_diagnostics(ctx);
   if (ctx.rank() == 0) {
     const std::string path = ctx.out_dir() + "/analysis.tsv";
-    const bool fresh = history.rows.empty() && !ctx.recovered();
-    std::ofstream out(path, fresh ? std::ios::trunc : std::ios::app);
-    if (!out) throw RunError("Analysis: cannot write " + path);
-    if (fresh) out << tsv_header();
+    if (history.rows.empty()) start_or_resume_tsv_file(ctx, path, tsv_header());
+    std::ofstream out(path, std::ios::app);
     out << tsv_line(d);
+    if (!out) throw RunError("Analysis: cannot write " + path);
   }
   history.rows.push_back(d);
 }

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "centre_value.hpp"
+#include "remnant/tsv_file.hpp"
 #include "variable_list.hpp"
 
 namespace remnant::io {
@@ -49,34 +50,6 @@ void start_tsv_files(const std::vector<TsvSeries>& series, const Context& ctx) {
     if (!f) throw RunError("cannot create " + s.path);
     write_header(f, s);
   }
-}
-
-std::int64_t trim_tsv_file(const std::string& path, std::int64_t last) {
-  std::ifstream in(path);
-  if (!in) throw RunError("cannot read " + path);
-  std::ostringstream kept;
-  std::string line;
-  std::int64_t dropped = 0;
-  while (std::getline(in, line)) {
-    if (line.empty() || line[0] == '#') {
-      kept << line << "\n";
-      continue;
-    }
-    // A row cut short by a crash has no trailing newline or fewer columns: drop it too.
-    long long it = 0;
-    const bool complete = !in.eof() && std::sscanf(line.c_str(), "%lld", &it) == 1 && line.find('\t') != std::string::npos;
-    if (complete && it <= last) kept << line << "\n";
-    else ++dropped;
-  }
-  in.close();
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    out << kept.str();
-    if (!out) throw RunError("cannot write " + tmp);
-  }
-  std::filesystem::rename(tmp, path);
-  return dropped;
 }
 
 void resume_tsv_files(const std::vector<TsvSeries>& series, const Context& ctx, std::int64_t iteration) {

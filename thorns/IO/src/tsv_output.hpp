@@ -30,9 +30,6 @@ void start_tsv_files(const std::vector<TsvSeries>& series, const Context& ctx);
 // After a recovery at `iteration`: keeps the header and the rows up to that iteration, drops later
 // rows (written by a run that died after its checkpoint), creates missing files; rank 0 only.
 void resume_tsv_files(const std::vector<TsvSeries>& series, const Context& ctx, std::int64_t iteration);
-// Keeps header lines and rows with iteration <= last of one file (atomic rewrite); returns the
-// number of rows dropped. Exposed for tests.
-std::int64_t trim_tsv_file(const std::string& path, std::int64_t last);
 // Reduces and appends one line per file; collective.
 void append_tsv_lines(std::vector<TsvSeries>& series, Context& ctx, const std::array<double, 3>& centre);
 

@@ -13,6 +13,7 @@
 #include "checksum.hpp"
 #include "curvilinear.hpp"
 #include "fake_grid.hpp"
+#include "remnant/tsv_file.hpp"
 #include "parameter_record.hpp"
 #include "patches.hpp"
 #include "tsv_output.hpp"

@@ -4,7 +4,9 @@
 #include <mpi.h>
 
 #include <chrono>
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -16,6 +18,7 @@
 #include "matter_coupling.hpp"
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
+#include "remnant/tsv_file.hpp"
 
 namespace remnant::xcfc {
 namespace {
@@ -26,6 +29,10 @@ struct Runtime {
   std::unique_ptr<XcfcSolver> solver;
   GridShape shape;
   std::int64_t steps_since_solve = 0, solves = 0;
+  // Times of the last two solves and how many of XCFC::metric_history's two slots are filled.
+  double t_last = 0, t_before = 0;
+  int history = 0;
+  bool tsv_started = false;  // xcfc.tsv created (fresh run) or trimmed (recovered run) by this process
 };
 
 Runtime& runtime() {
@@ -96,11 +103,12 @@ void check_fatal(Context& ctx, std::uint64_t fatal) {
 void write_tsv(Context& ctx, const char* reason, const XcfcStats& s, double seconds) {
   if (ctx.rank() != 0) return;
   const std::string path = ctx.out_dir() + "/xcfc.tsv";
-  const bool fresh = runtime().solves == 1 && !ctx.recovered();
-  std::ofstream out(path, fresh ? std::ios::trunc : std::ios::app);
-  if (fresh)
-    out << "# iteration\ttime\treason\tX_cycles\tX_residual\tpsi_cycles\tpsi_residual\talphapsi_cycles\talphapsi_residual\t"
-           "beta_cycles\tbeta_residual\twall_s\n";
+  if (!runtime().tsv_started)
+    start_or_resume_tsv_file(ctx, path,
+                             "# iteration\ttime\treason\tX_cycles\tX_residual\tpsi_cycles\tpsi_residual\talphapsi_cycles\t"
+                             "alphapsi_residual\tbeta_cycles\tbeta_residual\twall_s\n");
+  runtime().tsv_started = true;
+  std::ofstream out(path, std::ios::app);
   auto rel = [](const SolveStats& x) { return x.scale > 0 ? x.residual / x.scale : x.residual; };
   char line[512];
   std::snprintf(line, sizeof line, "%lld\t%.17g\t%s\t%d\t%.3e\t%d\t%.3e\t%d\t%.3e\t%d\t%.3e\t%.6f\n",
@@ -112,6 +120,40 @@ void write_tsv(Context& ctx, const char* reason, const XcfcStats& s, double seco
 void warn_unconverged(Context& ctx, const XcfcStats& s) {
   if (!(s.X.converged() && s.psi.converged && s.alpha_psi.converged && s.beta.converged()))
     ctx.warn("XCFC: a metric solve reached XCFC::max_cycles before the tolerance (see xcfc.tsv)");
+}
+
+// Shifts XCFC::metric_history (last -> before) and stores the metric just solved as the last.
+void record_history(Context& ctx) {
+  Runtime& rt = runtime();
+  const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < 5; ++c) {
+      Field m = b->field(metric, c), last = b->field(hist, c), before = b->field(hist, 5 + c);
+      for_interior(*b, [&](int i, int j, int k) {
+        before(i, j, k) = last(i, j, k);
+        last(i, j, k) = m(i, j, k);
+      });
+    }
+  rt.t_before = rt.t_last;
+  rt.t_last = ctx.time();
+  rt.history = std::min(rt.history + 1, 2);
+}
+
+// Between solves: the metric at the current time extrapolated linearly from the last two solves,
+// then the primitives recovered with the new psi (the densitised conserved variables are the
+// evolved ones). Holding the metric instead lags gravity by half a solve interval on average, which
+// acts as a damping force on the stellar oscillations (README, "Cadence").
+void extrapolate(Context& ctx) {
+  const Runtime& rt = runtime();
+  if (rt.history < 2 || !(rt.t_last > rt.t_before)) return;
+  const double w = (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before);
+  const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < 5; ++c) {
+      Field m = b->field(metric, c), last = b->field(hist, c), before = b->field(hist, 5 + c);
+      for_interior(*b, [&](int i, int j, int k) { m(i, j, k) = last(i, j, k) + w * (last(i, j, k) - before(i, j, k)); });
+    }
+  check_fatal(ctx, recover_primitives(ctx, MatterGroups::of(ctx)));
 }
 
 // What every xCFC solve works with, set up from the warm start; finish() solves for alpha psi and
@@ -137,6 +179,7 @@ struct Solve {
         br.gather_cells([&](Block& b, int i, int j, int k) { return densitised_stress_trace(b, g, i, j, k); });
     sv.solve_lapse_and_shift(src.E, src.S, S, st, stats, set);
     store_lapse_shift(br, g, potentials, st);
+    record_history(ctx);
     ++runtime().solves;
     runtime().steps_since_solve = 0;
     warn_unconverged(ctx, stats);
@@ -202,6 +245,7 @@ void prestep(Context& ctx) {
   if (every <= 0) return;
   ++rt.steps_since_solve;
   if (rt.steps_since_solve >= every) return solve_sequence(ctx, false, "cadence");
+  if (ctx.param<std::string>("XCFC", "extrapolation") == "linear") extrapolate(ctx);
   const double trigger = ctx.param<double>("XCFC", "residual_trigger");
   if (trigger > 0 && psi_residual(ctx) > trigger) solve_sequence(ctx, false, "residual");
 }
@@ -215,12 +259,20 @@ REMNANT_REGISTER_THORN(XCFC) {
   reg.function("XCFC_Solve", prestep);
   reg.persistent_state(
       [](remnant::Context&) {
-        std::ostringstream s;
-        s << runtime().steps_since_solve << ' ' << runtime().solves;
-        return s.str();
+        // Solve times as hexadecimal floats: a restart extrapolates with bit-identical weights.
+        const Runtime& rt = runtime();
+        char text[160];
+        std::snprintf(text, sizeof text, "%lld %lld %a %a %d", static_cast<long long>(rt.steps_since_solve),
+                      static_cast<long long>(rt.solves), rt.t_last, rt.t_before, rt.history);
+        return std::string(text);
       },
       [](remnant::Context&, const std::string& text) {
+        Runtime& rt = runtime();
         std::istringstream s(text);
-        s >> runtime().steps_since_solve >> runtime().solves;
+        std::string t_last, t_before;
+        s >> rt.steps_since_solve >> rt.solves >> t_last >> t_before >> rt.history;
+        if (!s) throw remnant::RunError("XCFC: the checkpoint's persistent state '" + text + "' is not 'steps solves t_last t_before history'");
+        rt.t_last = std::strtod(t_last.c_str(), nullptr);
+        rt.t_before = std::strtod(t_before.c_str(), nullptr);
       });
 }

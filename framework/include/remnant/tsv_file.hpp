@@ -1,0 +1,22 @@
+#pragma once
+// Thorns' own TSV time series (analysis.tsv, xcfc.tsv, IO's reductions) across restarts: rows are
+// "iteration<TAB>...", header lines start with '#'. A recovered run keeps the rows up to the
+// recovered iteration and drops those of the run that died after its checkpoint, so a restarted
+// series is the same as a straight one.
+#include <cstdint>
+#include <string>
+
+#include "remnant/context.hpp"
+
+namespace remnant {
+
+// Keeps header lines and rows with iteration <= last (atomic rewrite; a row cut short by a crash is
+// dropped too); returns the number of rows dropped.
+std::int64_t trim_tsv_file(const std::string& path, std::int64_t last);
+
+// Before a thorn's first row of this run (rank 0): a fresh run creates the file with `header`
+// (lines starting with '#', ending in a newline); a recovered run trims it to the recovered
+// iteration (or creates it when missing).
+void start_or_resume_tsv_file(const Context& ctx, const std::string& path, const std::string& header);
+
+}  // namespace remnant
