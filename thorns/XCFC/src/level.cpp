@@ -93,10 +93,29 @@ Level::Level(const GridShape& s) : shape(s) {
   for (double d : diagonal) max_diagonal = std::max(max_diagonal, d);
   const int longest = std::max({s.n[0], s.n[1], s.n[2]});
   for (auto* w : {&line_lo, &line_di, &line_up, &line_rhs}) w->assign(static_cast<std::size_t>(longest), 0.0);
+  if (s.dimension <= 2)
+    for (int d = 0; d < s.dimension; ++d) {
+      const std::size_t lines = nc / static_cast<std::size_t>(s.n[d]);
+      for (auto& c : end_c1[d]) c.assign(lines, 0.0);
+      line_w[d].assign(nc, 0.0);
+      line_inv[d].assign(nc, 0.0);
+    }
   for (int d = 0; d < 3; ++d) {
     if (!s.used(d)) continue;
     const int e1 = (d + 1) % 3, e2 = (d + 2) % 3;
     for (int side = 0; side < 2; ++side) {
+      GhostFace& gf = ghost_faces[d][side];
+      for (int t2 = 0; t2 < s.n[e2]; ++t2)
+        for (int t1 = 0; t1 < s.n[e1]; ++t1) {
+          std::array<int, 3> gi{}, m{};
+          gi[d] = side == 0 ? -1 : s.n[d], gi[e1] = t1, gi[e2] = t2;
+          m = gi;
+          m[d] = side == 0 ? 0 : s.n[d] - 1;
+          gf.ghost.push_back(at(gi[0], gi[1], gi[2]));
+          gf.inner.push_back(at(m[0], m[1], m[2]));
+          if (s.boundary[d][side] == Boundary::origin && s.used(1) && s.origin_flips_theta()) m[1] = s.n[1] - 1 - m[1];
+          gf.mirror.push_back(at(m[0], m[1], m[2]));
+        }
       if (s.boundary[d][side] != Boundary::outer) continue;
       auto &f1 = robin1[d][side], &f2 = robin2[d][side];
       f1.assign(static_cast<std::size_t>(s.n[e1]) * s.n[e2], 0.0);

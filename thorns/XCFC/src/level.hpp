@@ -25,11 +25,26 @@ struct Level {
   // [direction][side], indexed t1 + n[e1] * t2 over the face (e1, e2 = d+1, d+2 mod 3): geometry
   // only, so computed once instead of per ghost fill.
   std::array<std::array<std::vector<double>, 2>, 3> robin1, robin2;
+  // Face ghosts per [direction][side], indexed like robin1: the ghost's index, the adjacent interior
+  // cell's and the mirror cell's (the source of a symmetry ghost), all in ghosted arrays.
+  struct GhostFace {
+    std::vector<std::ptrdiff_t> ghost, inner, mirror;
+  };
+  std::array<std::array<GhostFace, 2>, 3> ghost_faces;
   std::vector<double> restrict_volume;            // sum of the fine volumes restricted into each cell
   std::vector<double> line_lo, line_di, line_up, line_rhs;  // line-relaxation work (longest line)
+  // Line relaxation (1D and 2D): the line end ghost is c0 + c1 * u_end with c1 from the
+  // equation's boundary kind (Robin ratio, -1 Dirichlet, parity, 0 for a held ghost), per
+  // [direction][side] and line (index along the transverse direction). For linear equations the
+  // tridiagonal line matrices are fixed, so their Thomas factors are kept per cell and direction:
+  // line_w the elimination multiplier, line_inv the inverse pivot.
+  std::array<std::array<std::vector<double>, 2>, 3> end_c1;
+  std::array<std::vector<double>, 3> line_w, line_inv;
+  bool factored = false;
 
   // Equation on this level (interior arrays) and work arrays.
   std::vector<double> k, s0, s1, s7, f, r;
+  std::vector<double> k_eq;                       // k without the angular-mode term (restricted)
   std::vector<double> u, ubar;                    // ghosted
 
   explicit Level(const GridShape& s);

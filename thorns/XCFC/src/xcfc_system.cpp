@@ -16,11 +16,12 @@ void for_cells(const GridShape& s, F&& f) {
       for (int i = 0; i < s.n[0]; ++i) f(q++, i, j, k);
 }
 
-VectorField raise(const GridShape& s, const VectorField& dn, double factor) {
+VectorField raise(const Multigrid& mg, const VectorField& dn, double factor) {
+  const GridShape& s = mg.shape();
   VectorField up;
   for (auto& c : up) c.assign(s.cells(), 0.0);
   for_cells(s, [&](std::size_t q, int i, int j, int k) {
-    const Point3 f = coords::metric_diagonal(s.coordinates, s.point(i, j, k));
+    const Point3& f = mg.frames().f[static_cast<std::size_t>(mg.ghosted_index(i, j, k))];
     for (int c = 0; c < 3; ++c) up[c][q] = factor * dn[c][q] / f[c];
   });
   return up;
@@ -53,10 +54,9 @@ void XcfcSolver::compute_A(XcfcState& st) {
   for (auto& a : st.A) a.assign(s.cells(), 0.0);
   st.A2.assign(s.cells(), 0.0);
   for_cells(s, [&](std::size_t q, int i, int j, int k) {
-    const Point3 x = s.point(i, j, k);
-    const Point3 f = coords::metric_diagonal(s.coordinates, x);
-    const Christoffels G = coords::christoffels(s.coordinates, x);
     const std::size_t p = static_cast<std::size_t>(mg_.ghosted_index(i, j, k));
+    const Point3& f = mg_.frames().f[p];
+    const Christoffels G = coords::christoffels(s.coordinates, s.point(i, j, k));
     double X[3], D[3][3];  // D[a][b] = nabla_a X^b
     for (int b = 0; b < 3; ++b) X[b] = g[b][p];
     for (int a = 0; a < 3; ++a)
@@ -85,7 +85,7 @@ void XcfcSolver::solve_conformal_factor(const std::vector<double>& E, const Vect
   // a nearly static star has momenta at round-off level, which need no relative accuracy.
   SolveSettings vset = settings;
   for (double e : E) vset.scale_floor = std::max(vset.scale_floor, 2 * pi * std::abs(e));
-  stats.X = solve_vector_poisson(mg_, raise(s, S_dn, 8 * pi), st.X_potentials, st.X, vset);
+  stats.X = solve_vector_poisson(mg_, raise(mg_, S_dn, 8 * pi), st.X_potentials, st.X, vset);
   compute_A(st);
   ScalarEquation eq = conformal_factor_equation();
   eq.s1.resize(s.cells());
@@ -127,7 +127,10 @@ void XcfcSolver::solve_lapse_and_shift(const std::vector<double>& E, const Vecto
 
   // Shift source: 16 pi alpha psi^-6 f^ij S~_j + 2 A^ij d_j (alpha psi^-6).
   std::vector<double> w(s.cells());
-  for (std::size_t q = 0; q < s.cells(); ++q) w[q] = st.alpha_psi[q] / std::pow(st.psi[q], 7);
+  for (std::size_t q = 0; q < s.cells(); ++q) {
+    const double p = st.psi[q], p2 = p * p, p4 = p2 * p2;
+    w[q] = st.alpha_psi[q] / (p4 * p2 * p);
+  }
   ScalarEquation weq;
   weq.far_value = 1.0;
   const std::vector<double> gw = mg_.with_ghosts(weq, w);
@@ -135,8 +138,8 @@ void XcfcSolver::solve_lapse_and_shift(const std::vector<double>& E, const Vecto
   VectorField src;
   for (auto& c : src) c.assign(s.cells(), 0.0);
   for_cells(s, [&](std::size_t q, int i, int j, int k) {
-    const Point3 f = coords::metric_diagonal(s.coordinates, s.point(i, j, k));
     const std::size_t p = static_cast<std::size_t>(mg_.ghosted_index(i, j, k));
+    const Point3& f = mg_.frames().f[p];
     double dw[3] = {0, 0, 0};
     for (int d = 0; d < s.dimension; ++d) dw[d] = (gw[p + stride[d]] - gw[p - stride[d]]) / (2 * s.dx[d]);
     for (int a = 0; a < 3; ++a) {

@@ -18,7 +18,7 @@ struct Result {
   SolveStats stats;
 };
 
-Result solve_case(const Case& c, int factor, bool nonlinear) {
+Result solve_case(const Case& c, int factor, bool nonlinear, bool direct_1d = true) {
   const GridShape s = scaled(c.shape, factor);
   Multigrid mg(s);
   ScalarEquation eq;
@@ -48,6 +48,7 @@ Result solve_case(const Case& c, int factor, bool nonlinear) {
   SolveSettings set;
   set.tolerance = 1e-10;
   set.max_cycles = 60;
+  set.direct_1d = direct_1d;
   if (const char* e = std::getenv("XCFC_SWEEPS")) set.pre_sweeps = set.post_sweeps = std::atoi(e);
   const SolveStats st = mg.solve(eq, u, set);
   double err = 0;
@@ -67,6 +68,16 @@ void check(bool nonlinear) {
     for (const auto& x : r) EXPECT_TRUE(x.stats.converged) << c.name;
     EXPECT_GT(p2, 1.8) << c.name;
     EXPECT_LT(r[2].stats.factor, 0.35) << c.name;
+    if (c.shape.dimension != 1) continue;
+    // 1D is solved by line solves by default; the V-cycle path must still converge as well.
+    Result v[3];
+    for (int m = 0; m < 3; ++m) v[m] = solve_case(c, 1 << m, nonlinear, false);
+    std::printf("%-10s %-15s  V-cycle path (direct_1d off): order %.2f  V-cycles %d %d %d  factor %.3f %.3f %.3f\n",
+                nonlinear ? "psi-type" : "alpsi-type", c.name.c_str(), order(v[1].error, v[2].error), v[0].stats.cycles,
+                v[1].stats.cycles, v[2].stats.cycles, v[0].stats.factor, v[1].stats.factor, v[2].stats.factor);
+    for (const auto& x : v) EXPECT_TRUE(x.stats.converged) << c.name;
+    EXPECT_GT(order(v[1].error, v[2].error), 1.8) << c.name;
+    EXPECT_LT(v[2].stats.factor, 0.35) << c.name;
   }
 }
 

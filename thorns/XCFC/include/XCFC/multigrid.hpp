@@ -39,6 +39,9 @@ struct SolveSettings {
   int pre_sweeps = 2, post_sweeps = 2, coarse_sweeps = 60;
   bool full_multigrid = false;  // FMG start instead of the warm start
   double scale_floor = 0.0;     // lower bound of the residual scale (see XcfcSolver)
+  // 1D grids are one line: solve them by tridiagonal (Newton for nonlinear) line solves on the
+  // finest level instead of V-cycles (exact for linear equations; each counts as one cycle).
+  bool direct_1d = true;
 };
 
 struct SolveStats {
@@ -47,6 +50,14 @@ struct SolveStats {
   double factor = 0;         // geometric mean of the residual reduction per V-cycle
   std::vector<double> history;  // max|residual| after each V-cycle
   bool converged = false;
+};
+
+// Geometry of the finest level's cells in the ghosted layout (ghosted_index), computed once per
+// grid: the Jacobian J[A][i] = dX^A / dx^i and the reference-metric diagonal f_ii at each cell's
+// evaluation point. The vector transformations would otherwise call sin/cos per cell and solve.
+struct CellFrames {
+  std::vector<Matrix3> J;
+  std::vector<Point3> f;
 };
 
 class Multigrid {
@@ -67,6 +78,7 @@ class Multigrid {
   std::vector<double> with_ghosts(const ScalarEquation& eq, const std::vector<double>& u) const;
   std::ptrdiff_t ghosted_index(int i, int j, int k) const;
   std::array<std::ptrdiff_t, 3> ghosted_strides() const;
+  const CellFrames& frames() const;
 
  private:
   struct Impl;
