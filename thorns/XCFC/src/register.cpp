@@ -45,7 +45,7 @@ XcfcSolver& solver(Context& ctx) {
   const GridShape s = shape_of_grid(ctx);
   if (!rt.solver || s.n != rt.shape.n || s.coordinates != rt.shape.coordinates || s.dimension != rt.shape.dimension) {
     rt.shape = s;
-    rt.solver = std::make_unique<XcfcSolver>(s);
+    rt.solver = std::make_unique<XcfcSolver>(s, ctx.grid().comm());  // the cycles' work is split between its ranks
   }
   return *rt.solver;
 }

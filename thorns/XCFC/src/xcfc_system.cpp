@@ -45,7 +45,7 @@ ScalarEquation lapse_equation() {
   return eq;
 }
 
-XcfcSolver::XcfcSolver(const GridShape& shape) : mg_(shape) {}
+XcfcSolver::XcfcSolver(const GridShape& shape, MPI_Comm comm) : mg_(shape, comm) {}
 
 void XcfcSolver::compute_A(XcfcState& st) {
   const GridShape& s = mg_.shape();

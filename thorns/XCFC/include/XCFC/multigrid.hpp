@@ -8,6 +8,10 @@
 // local Newton step per cell, V-cycles on levels coarsened 2:1 per direction while the cell count is
 // even (semi-coarsening once a direction is exhausted), full multigrid from the coarsest level,
 // convergence on the L-infinity norm of the residual relative to the L-infinity norm of the sources.
+// With a communicator of several ranks the cycles' work is split in slabs between the ranks (arrays
+// stay complete on every rank; see README.md, "MPI and AMR"), bit-identical to one rank.
+#include <mpi.h>
+
 #include <functional>
 #include <memory>
 #include <vector>
@@ -50,6 +54,9 @@ struct SolveStats {
   double factor = 0;         // geometric mean of the residual reduction per V-cycle
   std::vector<double> history;  // max|residual| after each V-cycle
   bool converged = false;
+  // Cells relaxed by this rank (point updates plus cells of relaxed lines) on the finest level and
+  // on all levels: the measure of how the work is split between ranks.
+  long long relaxed_cells = 0, relaxed_cells_all = 0;
 };
 
 // Geometry of the finest level's cells in the ghosted layout (ghosted_index), computed once per
@@ -62,13 +69,15 @@ struct CellFrames {
 
 class Multigrid {
  public:
-  explicit Multigrid(const GridShape& shape);
+  // comm: the ranks sharing the work (every rank calls solve with the same arguments).
+  explicit Multigrid(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF);
   ~Multigrid();
   Multigrid(Multigrid&&) noexcept;
   Multigrid& operator=(Multigrid&&) noexcept;
 
   const GridShape& shape() const;
   int levels() const;
+  int distributed_levels() const;  // leading levels whose work is split between the ranks
   // Solves in place: u holds the initial guess (warm start) and returns the solution.
   SolveStats solve(const ScalarEquation& eq, std::vector<double>& u, const SolveSettings& s);
   // Max-norm residual of the finest-level discrete equation.

@@ -33,7 +33,7 @@ struct XcfcState {
 
 class XcfcSolver {
  public:
-  explicit XcfcSolver(const GridShape& shape);
+  explicit XcfcSolver(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF);
   const GridShape& shape() const { return mg_.shape(); }
   Multigrid& multigrid() { return mg_; }
 

@@ -1,0 +1,124 @@
+// The distributed multigrid: manufactured problems solved with MPI_COMM_WORLD must give exactly the
+// bits of the MPI_COMM_SELF solve (solution, residual history, V-cycle counts), while each rank
+// relaxes only its share of the finest level's cells. Run on 2 ranks by the ctest XCFC.mpi2 (and on
+// one rank by the plain test program, where it checks the serial path against itself).
+#include <gtest/gtest.h>
+#include <mpi.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "XCFC/multigrid.hpp"
+#include "manufactured.hpp"
+
+namespace {
+
+using namespace remnant;
+using namespace remnant::xcfc;
+using namespace remnant::xcfc::test;
+
+struct Problem {
+  ScalarEquation eq;
+  std::vector<double> guess;
+  SolveSettings set;
+};
+
+// psi-type (nonlinear, Dirichlet, FMG start) or alpha psi-type (linear, Robin far field, warm start
+// from 1), optionally with the m = 1 point term and odd parity of a vector component.
+Problem make_problem(const GridShape& s, bool nonlinear, bool m1) {
+  Problem p;
+  const Bump bump{1.0, nonlinear ? 0.3 : -0.3, {0.5, 0.6, 0.7}, {0, 0, 0}};
+  ScalarEquation& eq = p.eq;
+  eq.s0.resize(s.cells());
+  if (nonlinear) eq.s1.resize(s.cells()), eq.s7.resize(s.cells());
+  else eq.k.resize(s.cells());
+  for_cells(s, [&](std::size_t q, int i, int j, int k) {
+    const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
+    const double u = bump(X), lap = bump.laplacian(X);
+    const double w = std::exp(-0.3 * (X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
+    if (nonlinear) {
+      eq.s1[q] = -0.2 * w, eq.s7[q] = -0.05 * w;
+      eq.s0[q] = lap - eq.s1[q] / u - eq.s7[q] / std::pow(u, 7);
+    } else {
+      eq.k[q] = 0.3 * w;
+      eq.s0[q] = lap - eq.k[q] * u;
+    }
+  });
+  if (nonlinear) {
+    eq.dirichlet = [s, bump](const Point3& x) { return bump(coords::to_cartesian(s.coordinates, x)); };
+  } else {
+    eq.far_value = 1.0;
+  }
+  if (m1) {
+    eq.mode = AngularMode::axisymmetric_m1;
+    for (auto& side : eq.parity) side = {-1, -1};
+  }
+  p.guess.assign(s.cells(), 1.0);
+  p.set.tolerance = nonlinear ? 1e-10 : 1e-8;
+  p.set.max_cycles = 40;
+  p.set.full_multigrid = nonlinear;
+  return p;
+}
+
+bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
+}
+
+void check(const char* name, const GridShape& s, bool m1 = false) {
+  int nranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+  Multigrid serial(s), parallel(s, MPI_COMM_WORLD);
+  if (nranks >= 2) EXPECT_GE(parallel.distributed_levels(), 1) << name << ": the finest level is not split";
+  else EXPECT_EQ(parallel.distributed_levels(), 0) << name;
+  for (const bool nonlinear : {true, false}) {
+    const Problem p = make_problem(s, nonlinear, m1 && !nonlinear);
+    std::vector<double> u1 = p.guess, uN = p.guess;
+    const SolveStats a = serial.solve(p.eq, u1, p.set);
+    const SolveStats b = parallel.solve(p.eq, uN, p.set);
+    const char* kind = nonlinear ? "psi-type" : "alpha-psi-type";
+    EXPECT_TRUE(a.converged) << name << " " << kind;
+    EXPECT_GT(a.cycles, 1) << name << " " << kind;
+    EXPECT_EQ(a.cycles, b.cycles) << name << " " << kind;
+    EXPECT_TRUE(same_bits(u1, uN)) << name << " " << kind << ": solution differs from the one-rank solve";
+    EXPECT_TRUE(same_bits(a.history, b.history)) << name << " " << kind << ": residual history differs";
+    EXPECT_EQ(std::memcmp(&a.initial_residual, &b.initial_residual, sizeof(double)), 0) << name << " " << kind;
+    EXPECT_EQ(std::memcmp(&a.scale, &b.scale, sizeof(double)), 0) << name << " " << kind;
+    // The finest level's relaxation is a partition of the serial one: shares add up exactly, and
+    // each rank's share is about 1/nranks.
+    long long total = 0;
+    MPI_Allreduce(&b.relaxed_cells, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_EQ(total, a.relaxed_cells) << name << " " << kind;
+    const double share = double(b.relaxed_cells) / double(a.relaxed_cells);
+    EXPECT_NEAR(share, 1.0 / nranks, 0.1) << name << " " << kind << ": this rank relaxed " << b.relaxed_cells << " of "
+                                          << a.relaxed_cells << " fine cells";
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0)
+      std::printf("%-28s %-15s V-cycles %2d  fine cells relaxed: one rank %lld, rank 0 of %d %lld (%.3f)\n", name, kind,
+                  b.cycles, a.relaxed_cells, nranks, b.relaxed_cells, share);
+  }
+}
+
+constexpr double pi = std::numbers::pi;
+using B = Boundary;
+using C = CoordinateSystem;
+
+TEST(XCFCMultigridMPI, Cartesian3D) {
+  check("cartesian 3D 32^3", make_shape(C::cartesian, 3, {32, 32, 32}, {0, 0, 0}, {3, 3, 3},
+                                        {{{B::reflect, B::outer}, {B::reflect, B::outer}, {B::reflect, B::outer}}}));
+  // 18 planes: the coarsest split level (9 planes) is cut 4 + 5, the next level semi-coarsens.
+  check("cartesian 3D 32x32x18", make_shape(C::cartesian, 3, {32, 32, 18}, {-2, -2, 0}, {2, 2, 3},
+                                            {{{B::outer, B::outer}, {B::outer, B::outer}, {B::reflect, B::outer}}}));
+}
+
+TEST(XCFCMultigridMPI, Spherical2D) {
+  check("spherical 2D 128x64", make_shape(C::spherical, 2, {128, 64, 1}, {0, 0, 0}, {5, pi / 2, 2 * pi},
+                                          {{{B::origin, B::outer}, {B::axis, B::reflect}, {B::outer, B::outer}}}));
+  // Both hemispheres: the origin's mirror cell lies at theta index n1-1-j, on the other rank.
+  check("spherical 2D 96x48 (0..pi)", make_shape(C::spherical, 2, {96, 48, 1}, {0, 0, 0}, {5, pi, 2 * pi},
+                                                 {{{B::origin, B::outer}, {B::axis, B::axis}, {B::outer, B::outer}}}),
+        true);
+}
+
+}  // namespace
