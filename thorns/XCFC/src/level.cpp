@@ -92,7 +92,7 @@ Level::Level(const GridShape& s) : shape(s) {
       }
   for (double d : diagonal) max_diagonal = std::max(max_diagonal, d);
   const int longest = std::max({s.n[0], s.n[1], s.n[2]});
-  for (auto* w : {&line_lo, &line_di, &line_up, &line_rhs}) w->assign(static_cast<std::size_t>(longest), 0.0);
+  for (auto* w : {&line_di, &line_rhs}) w->assign(static_cast<std::size_t>(longest), 0.0);
   if (s.dimension <= 2)
     for (int d = 0; d < s.dimension; ++d) {
       const std::size_t lines = nc / static_cast<std::size_t>(s.n[d]);

@@ -32,7 +32,7 @@ struct Level {
   };
   std::array<std::array<GhostFace, 2>, 3> ghost_faces;
   std::vector<double> restrict_volume;            // sum of the fine volumes restricted into each cell
-  std::vector<double> line_lo, line_di, line_up, line_rhs;  // line-relaxation work (longest line)
+  std::vector<double> line_di, line_rhs;  // line-relaxation work (longest line)
   // Line relaxation (1D and 2D): the line end ghost is c0 + c1 * u_end with c1 from the
   // equation's boundary kind (Robin ratio, -1 Dirichlet, parity, 0 for a held ghost), per
   // [direction][side] and line (index along the transverse direction). For linear equations the

@@ -1,0 +1,149 @@
+#include "work_partition.hpp"
+
+#include <algorithm>
+
+namespace remnant::xcfc {
+
+WorkPartition::WorkPartition(MPI_Comm c) {
+  if (c == MPI_COMM_SELF) return;
+  MPI_Comm_dup(c, &comm);  // own tag space: no mix-up with the Grid's messages
+  MPI_Comm_rank(comm, &rank_);
+  MPI_Comm_size(comm, &nranks_);
+}
+
+WorkPartition::~WorkPartition() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (comm != MPI_COMM_SELF && !finalized) MPI_Comm_free(&comm);
+}
+
+Range WorkPartition::range(std::size_t l) const {
+  Range r = full(l);
+  const Part& p = parts[l];
+  if (p.dist) (p.s == 2 ? r.k0 : r.j0) = p.lo, (p.s == 2 ? r.k1 : r.j1) = p.hi;
+  return r;
+}
+
+bool WorkPartition::splittable(const GridShape& s) const {
+  if (nranks_ < 2 || s.dimension < 2) return false;
+  return s.n[s.dimension - 1] >= 2 * nranks_ && s.n[0] >= nranks_ && s.cells() >= kMinCells;
+}
+// The leading splittable levels are distributed. The coarsest of them is split as evenly as
+// possible and the finer ones inherit its cuts times the coarsening ratios (nested slabs), so
+// restriction and prolongation between distributed levels stay rank-local apart from the halos.
+void WorkPartition::build(const std::vector<Level>& levels) {
+  lv = &levels;
+  parts.assign(lv->size(), Part{});
+  for (std::size_t l = 0; l < lv->size(); ++l) {
+    const Level& L = (*lv)[l];
+    Part& p = parts[l];
+    p.s = L.shape.dimension - 1;
+    p.hi = L.shape.n[p.s];
+    p.line_hi = L.shape.n[0];
+  }
+  std::size_t D = 0;
+  while (D < lv->size() && splittable((*lv)[D].shape)) ++D;
+  if (D == 0) return;
+  const int sd = (*lv)[0].shape.dimension - 1;
+  const auto P = static_cast<std::size_t>(nranks_);
+  std::vector<int> b(P + 1);
+  for (std::size_t r = 0; r <= P; ++r)
+    b[r] = static_cast<int>(static_cast<long long>(r) * (*lv)[D - 1].shape.n[sd] / nranks_);
+  for (std::size_t l = D; l-- > 0;) {
+    if (l + 1 < D)
+      for (int& x : b) x *= (*lv)[l].ratio[sd];
+    const Level& L = (*lv)[l];
+    const GridShape& sh = L.shape;
+    Part& p = parts[l];
+    p.dist = true;
+    p.lo = b[static_cast<std::size_t>(rank_)], p.hi = b[static_cast<std::size_t>(rank_) + 1];
+    p.flip = sh.dimension == 2 && sh.boundary[0][0] == Boundary::origin && sh.origin_flips_theta();
+    p.plane = L.st[sd];
+    p.iplane = sd == 2 ? static_cast<std::ptrdiff_t>(sh.n[0]) * sh.n[1] : sh.n[0];
+    for (auto* v :
+         {&p.counts, &p.displs, &p.icounts, &p.idispls, &p.col_counts, &p.col_displs, &p.blk_counts, &p.blk_displs})
+      v->assign(P, 0);
+    for (std::size_t r = 0; r < P; ++r) {
+      const int planes = b[r + 1] - b[r];
+      p.counts[r] = static_cast<int>(planes * p.plane), p.displs[r] = static_cast<int>((b[r] + 1) * p.plane);
+      p.icounts[r] = static_cast<int>(planes * p.iplane), p.idispls[r] = static_cast<int>(b[r] * p.iplane);
+      p.col_counts[r] = planes, p.col_displs[r] = b[r];
+    }
+    if (sh.dimension == 2) {
+      const int n0 = sh.n[0], n1 = sh.n[1];
+      auto cut = [&](std::size_t r) { return static_cast<int>(static_cast<long long>(r) * n0 / nranks_); };
+      for (std::size_t r = 0; r < P; ++r) p.blk_counts[r] = (cut(r + 1) - cut(r)) * n1, p.blk_displs[r] = cut(r) * n1;
+      p.line_lo = cut(static_cast<std::size_t>(rank_)), p.line_hi = cut(static_cast<std::size_t>(rank_) + 1);
+      p.sbuf.assign(static_cast<std::size_t>(std::max((p.line_hi - p.line_lo) * n1, n1)), 0.0);
+      p.rbuf.assign(static_cast<std::size_t>(n1), 0.0);
+      p.gbuf.assign(sh.cells(), 0.0);
+    }
+  }
+}
+int WorkPartition::neighbour(int dr) const {
+  const int r = rank_ + dr;
+  return r >= 0 && r < nranks_ ? r : MPI_PROC_NULL;
+}
+double WorkPartition::global_max(double m) const {
+  if (nranks_ > 1) MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return m;
+}
+void WorkPartition::replicate(std::size_t l, std::vector<double>& a, bool ghosted) const {
+  const Part& p = parts[l];
+  if (!p.dist) return;
+  MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, a.data(), ghosted ? p.counts.data() : p.icounts.data(),
+                 ghosted ? p.displs.data() : p.idispls.data(), MPI_DOUBLE, comm);
+}
+void WorkPartition::halo(std::size_t l, std::vector<double>& a) {
+  Part& p = parts[l];
+  if (!p.dist) return;
+  double* v = a.data();
+  const int w = static_cast<int>(p.plane);
+  auto plane = [&](int k) { return v + (k + 1) * p.plane; };
+  MPI_Sendrecv(plane(p.hi - 1), w, MPI_DOUBLE, neighbour(1), 11, plane(p.lo - 1), w, MPI_DOUBLE, neighbour(-1), 11,
+               comm, MPI_STATUS_IGNORE);
+  MPI_Sendrecv(plane(p.lo), w, MPI_DOUBLE, neighbour(-1), 12, plane(p.hi), w, MPI_DOUBLE, neighbour(1), 12, comm,
+               MPI_STATUS_IGNORE);
+  if (!p.flip) return;
+  const Level& L = (*lv)[l];
+  for (int j = p.lo; j < p.hi; ++j) p.sbuf[static_cast<std::size_t>(j - p.lo)] = v[L.at(0, j, 0)];
+  MPI_Allgatherv(p.sbuf.data(), p.hi - p.lo, MPI_DOUBLE, p.rbuf.data(), p.col_counts.data(), p.col_displs.data(),
+                 MPI_DOUBLE, comm);
+  for (int j = 0; j < L.shape.n[1]; ++j) v[L.at(0, j, 0)] = p.rbuf[static_cast<std::size_t>(j)];
+}
+void WorkPartition::exchange_columns(std::size_t l, std::vector<double>& a) {
+  Part& p = parts[l];
+  const Level& L = (*lv)[l];
+  const int n1 = L.shape.n[1];
+  double* v = a.data();
+  auto pack = [&](int i) {
+    for (int j = 0; j < n1; ++j) p.sbuf[static_cast<std::size_t>(j)] = v[L.at(i, j, 0)];
+  };
+  auto unpack = [&](int i) {
+    for (int j = 0; j < n1; ++j) v[L.at(i, j, 0)] = p.rbuf[static_cast<std::size_t>(j)];
+  };
+  pack(p.line_hi - 1);
+  MPI_Sendrecv(p.sbuf.data(), n1, MPI_DOUBLE, neighbour(1), 13, p.rbuf.data(), n1, MPI_DOUBLE, neighbour(-1), 13, comm,
+               MPI_STATUS_IGNORE);
+  if (rank_ > 0) unpack(p.line_lo - 1);
+  pack(p.line_lo);
+  MPI_Sendrecv(p.sbuf.data(), n1, MPI_DOUBLE, neighbour(-1), 14, p.rbuf.data(), n1, MPI_DOUBLE, neighbour(1), 14, comm,
+               MPI_STATUS_IGNORE);
+  if (rank_ + 1 < nranks_) unpack(p.line_hi);
+}
+void WorkPartition::gather_columns(std::size_t l, std::vector<double>& a) {
+  Part& p = parts[l];
+  const Level& L = (*lv)[l];
+  const int n0 = L.shape.n[0], n1 = L.shape.n[1];
+  double* v = a.data();
+  std::size_t m = 0;
+  for (int i = p.line_lo; i < p.line_hi; ++i)
+    for (int j = 0; j < n1; ++j) p.sbuf[m++] = v[L.at(i, j, 0)];
+  MPI_Allgatherv(p.sbuf.data(), static_cast<int>(m), MPI_DOUBLE, p.gbuf.data(), p.blk_counts.data(),
+                 p.blk_displs.data(), MPI_DOUBLE, comm);
+  m = 0;
+  for (int i = 0; i < n0; ++i)
+    for (int j = 0; j < n1; ++j) v[L.at(i, j, 0)] = p.gbuf[m++];
+}
+
+}  // namespace remnant::xcfc

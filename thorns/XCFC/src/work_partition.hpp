@@ -1,0 +1,71 @@
+#pragma once
+// The MPI work partition of a multigrid hierarchy. Arrays are complete on every rank, only the
+// work is split: each level of dimension >= 2 that is large enough is cut in slabs of planes along
+// its last used direction (k in 3D, j in 2D); a rank computes its own planes and keeps one halo
+// plane on each side current (MPI_Sendrecv) before every stencil operation. Smaller (coarser)
+// levels are computed by every rank redundantly, from inputs made complete by MPI_Allgatherv.
+// With MPI_COMM_SELF no MPI call is made.
+#include <mpi.h>
+
+#include <cstddef>
+#include <vector>
+
+#include "level_ops.hpp"
+
+namespace remnant::xcfc {
+
+class WorkPartition {
+ public:
+  // Work partition of one level. Owned planes [lo, hi) along direction s (all of them when not
+  // distributed); 2D: the lines along s are solved whole, split by i instead: [line_lo, line_hi).
+  struct Part {
+    bool dist = false;
+    int s = 0, lo = 0, hi = 1, line_lo = 0, line_hi = 1;
+    bool flip = false;                     // 2D, the origin's mirror cell lies at theta index n1-1-j: on another rank
+    std::ptrdiff_t plane = 0, iplane = 0;  // ghosted / interior plane sizes along s
+    // MPI_Allgatherv layouts per rank: ghosted planes, interior planes, the i = 0 column (flip),
+    // and the packed column blocks of the line split.
+    std::vector<int> counts, displs, icounts, idispls, col_counts, col_displs, blk_counts, blk_displs;
+    std::vector<double> sbuf, rbuf, gbuf;  // exchange buffers (no allocation in the cycles)
+  };
+  // Below this a level is not split: the halo messages would cost more than the work saved.
+  static constexpr std::size_t kMinCells = 1024;
+
+  explicit WorkPartition(MPI_Comm c);
+  ~WorkPartition();
+  WorkPartition(const WorkPartition&) = delete;
+  WorkPartition& operator=(const WorkPartition&) = delete;
+
+  // Partitions a hierarchy (kept by reference: it must outlive this and not reallocate).
+  void build(const std::vector<Level>& levels);
+  const Part& part(std::size_t l) const { return parts[l]; }
+  const std::vector<Part>& all_parts() const { return parts; }
+  int rank() const { return rank_; }
+  int nranks() const { return nranks_; }
+  // The interior cells this rank works on (all of a level that is not split).
+  Range range(std::size_t l) const;
+  Range full(std::size_t l) const { return full_range((*lv)[l]); }
+
+  double global_max(double m) const;
+  // Owned planes (with their in-plane ghosts) of a ghosted or interior array to every rank.
+  void replicate(std::size_t l, std::vector<double>& a, bool ghosted) const;
+  // The halo planes lo-1 and hi of a ghosted array from the neighbouring ranks (and, where the
+  // origin's mirror crosses ranks, the column i = 0): what the stencils of the owned cells and the
+  // boundary ghosts they read need.
+  void halo(std::size_t l, std::vector<double>& a);
+  // 2D line split (lines along j, owned by i): the neighbouring lines line_lo-1 and line_hi.
+  void exchange_columns(std::size_t l, std::vector<double>& a);
+  // 2D line split: the owned lines to every rank (the whole interior complete again).
+  void gather_columns(std::size_t l, std::vector<double>& a);
+
+ private:
+  bool splittable(const GridShape& s) const;
+  int neighbour(int dr) const;
+
+  MPI_Comm comm = MPI_COMM_SELF;
+  int rank_ = 0, nranks_ = 1;
+  const std::vector<Level>* lv = nullptr;
+  std::vector<Part> parts;
+};
+
+}  // namespace remnant::xcfc
