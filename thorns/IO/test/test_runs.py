@@ -12,14 +12,15 @@
   grid_output  HDF5 volume/slices/lines on 1 and 2 ranks: utils/check_xdmf, h5py consistency
   plots      utils/plot_timeseries and utils/plot_slice make PNG files
 """
-import argparse
 import glob
 import os
-import shutil
 import subprocess
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "framework", "test", "python"))
+import remnant_runs  # noqa: E402
 
 BASE = ["Grid::ncells=[16,16,16]", "Grid::block_size=[8,8,8]", "MoL::final_time=-1",
         "Grid::boundary_lower=[periodic,periodic,reflect]", "Grid::boundary_upper=[periodic,periodic,outflow]",
@@ -27,23 +28,6 @@ BASE = ["Grid::ncells=[16,16,16]", "Grid::block_size=[8,8,8]", "MoL::final_time=
         "IO::tsv_every=1", "IO::tsv_variables=[WaveToy::wave]",
         "IO::tsv_reductions=[minimum,maximum,sum,volume_integral,norm1,norm2,centre]",
         "IO::centre=[0.5,0.5,0.5]", "Flesh::timers=false"]
-
-
-class Runner:
-    def __init__(self, a):
-        self.a = a
-        self.parfile = os.path.join(a.source_dir, "parfiles", "wavetoy_3d.yaml")
-
-    def run(self, name, np_, args, expect_ok=True):
-        out = os.path.join(self.a.work, name)
-        cmd = [self.a.mpirun, "-np", str(np_), "--oversubscribe", self.a.exe, self.parfile,
-               "Flesh::out_dir=" + out] + BASE + args
-        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        with open(os.path.join(self.a.work, name + ".log"), "a") as f:
-            f.write(" ".join(cmd) + "\n" + p.stdout)
-        if expect_ok and p.returncode != 0:
-            sys.exit("run %s failed (rc %d):\n%s" % (name, p.returncode, p.stdout[-4000:]))
-        return out, p
 
 
 def tsv_files(d):
@@ -232,26 +216,15 @@ def mode_plots(r):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--mode", required=True)
-    ap.add_argument("--exe", required=True)
-    ap.add_argument("--mpirun", default="mpirun")
-    ap.add_argument("--source-dir", required=True)
-    ap.add_argument("--work", required=True)
-    a = ap.parse_args()
-    shutil.rmtree(a.work, ignore_errors=True)
-    os.makedirs(a.work)
-    r = Runner(a)
     modes = {
-        "restart_np1": lambda: mode_restart(r, 1, 1), "restart_np2": lambda: mode_restart(r, 2, 2),
-        "restart_1to2": lambda: mode_restart(r, 1, 2), "restart_2to1": lambda: mode_restart(r, 2, 1),
-        "kill": lambda: mode_kill(r), "corrupt": lambda: damage_and_recover(r, "corrupt"),
-        "truncate": lambda: damage_and_recover(r, "truncate"), "walltime": lambda: mode_walltime(r),
-        "params": lambda: mode_params(r), "grid_output": lambda: mode_grid_output(r), "plots": lambda: mode_plots(r),
+        "restart_np1": lambda r: mode_restart(r, 1, 1), "restart_np2": lambda r: mode_restart(r, 2, 2),
+        "restart_1to2": lambda r: mode_restart(r, 1, 2), "restart_2to1": lambda r: mode_restart(r, 2, 1),
+        "kill": mode_kill, "corrupt": lambda r: damage_and_recover(r, "corrupt"),
+        "truncate": lambda r: damage_and_recover(r, "truncate"), "walltime": mode_walltime,
+        "params": mode_params, "grid_output": mode_grid_output, "plots": mode_plots,
     }
-    if a.mode not in modes:
-        sys.exit("unknown mode %s; modes: %s" % (a.mode, ", ".join(modes)))
-    modes[a.mode]()
+    remnant_runs.main(
+        lambda a: remnant_runs.Runner(a, os.path.join(a.source_dir, "parfiles", "wavetoy_3d.yaml"), BASE), modes)
 
 
 if __name__ == "__main__":

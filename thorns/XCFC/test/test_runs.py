@@ -14,36 +14,24 @@
   trigger        solve_every large, XCFC::residual_trigger on: early solves are made (reason
                  'residual'), fewer for a looser trigger, none when it is off
 """
-import argparse
 import os
-import shutil
-import subprocess
 import sys
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "framework", "test", "python"))
+import remnant_runs  # noqa: E402
+
 BASE = ["MoL::final_time=-1", "Analysis::every=1", "Flesh::timers=false", "Flesh::progress_every=0"]
 
 
-class Runner:
-    def __init__(self, a):
-        self.a = a
-        # bu0_dyn.yaml with the IO thorn (checkpoints) active.
-        self.parfile = os.path.join(a.work, "bu0_dyn_io.yaml")
-        with open(self.parfile, "w") as f:
-            f.write("include: %s\n" % os.path.abspath(os.path.join(a.source_dir, "parfiles", "bu0_dyn.yaml")))
-            f.write("active_thorns: [Grid, MoL, Spacetime, EOS, Atmosphere, Con2Prim, GRMHD, TOV, Analysis, XCFC, IO]\n")
-
-    def run(self, name, np_, args, expect_ok=True):
-        out = os.path.join(self.a.work, name)
-        cmd = [self.a.mpirun, "-np", str(np_), "--oversubscribe", self.a.exe, self.parfile,
-               "Flesh::out_dir=" + out] + BASE + args
-        p = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        with open(os.path.join(self.a.work, name + ".log"), "a") as f:
-            f.write(" ".join(cmd) + "\n" + p.stdout)
-        if expect_ok and p.returncode != 0:
-            sys.exit("run %s failed (rc %d):\n%s" % (name, p.returncode, p.stdout[-4000:]))
-        return out, p
+def make_runner(a):
+    # bu0_dyn.yaml with the IO thorn (checkpoints) active.
+    parfile = os.path.join(a.work, "bu0_dyn_io.yaml")
+    with open(parfile, "w") as f:
+        f.write("include: %s\n" % os.path.abspath(os.path.join(a.source_dir, "parfiles", "bu0_dyn.yaml")))
+        f.write("active_thorns: [Grid, MoL, Spacetime, EOS, Atmosphere, Con2Prim, GRMHD, TOV, Analysis, XCFC, IO]\n")
+    return remnant_runs.Runner(a, parfile, BASE)
 
 
 def rows(path, drop_last_column=False):
@@ -125,21 +113,8 @@ def mode_mass(r):
 
 
 def main():
-    ap = argparse.ArgumentParser()
-    ap.add_argument("--mode", required=True)
-    ap.add_argument("--exe", required=True)
-    ap.add_argument("--mpirun", default="mpirun")
-    ap.add_argument("--source-dir", required=True)
-    ap.add_argument("--work", required=True)
-    a = ap.parse_args()
-    shutil.rmtree(a.work, ignore_errors=True)
-    os.makedirs(a.work)
-    r = Runner(a)
-    modes = {"restart": lambda: mode_restart(r), "extrapolation": lambda: mode_extrapolation(r),
-             "trigger": lambda: mode_trigger(r), "mass": lambda: mode_mass(r)}
-    if a.mode not in modes:
-        sys.exit("unknown mode %s; modes: %s" % (a.mode, ", ".join(modes)))
-    modes[a.mode]()
+    remnant_runs.main(make_runner, {"restart": mode_restart, "extrapolation": mode_extrapolation,
+                                    "trigger": mode_trigger, "mass": mode_mass})
 
 
 if __name__ == "__main__":
