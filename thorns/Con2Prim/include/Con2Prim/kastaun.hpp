@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "Con2Prim/master_eos.hpp"
 #include "Con2Prim/root_finding.hpp"
 #include "Con2Prim/root_solution.hpp"
 #include "Con2Prim/settings.hpp"
@@ -22,7 +23,7 @@ class KastaunSolver {
   using Eval = MasterEval;
 
   KastaunSolver(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye)
-      : eos_(eos), b_(eos.bounds()), method_(s.eps_to_T), D_(c.D), ye_(ye) {
+      : thermo_(eos, s.eps_to_T, ye), D_(c.D) {
     const double invD = 1 / c.D;
     q_ = c.tau * invD;
     for (int i = 0; i < 3; ++i) r_low_[i] = c.S[i] * invD;
@@ -33,7 +34,7 @@ class KastaunSolver {
     Bc2_ = g.norm2_up(Bc_);
     rB_ = dot(r_low_, Bc_);
     rperp2_Bc2_ = std::max(0.0, r2_ * Bc2_ - rB_ * rB_);  // r_perp^2 Bc^2
-    h_min_ = b_.h_min;
+    h_min_ = thermo_.bounds().h_min;
     v0sq_ = r2_ / (h_min_ * h_min_ + r2_);
   }
 
@@ -59,22 +60,13 @@ class KastaunSolver {
     const double v2 = std::min(mu * mu * rb2, v0sq_);
     const double W = 1 / std::sqrt(1 - v2);
     const double rho0 = D_ / W;
-    const double rho = std::clamp(rho0, b_.rho_min, b_.rho_max);
     const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
     // eps clamped to [eps_low(rho, Ye), eps_high(rho, Ye)] and T from eps, guessed from the last call.
-    const eos::Inversion inv = eos_.temperature(rho, eps0, ye_, T_guess_, method_);
-    T_guess_ = inv.T;
-    const double press = eos_.press(rho, inv.T, ye_);
-    const double a = press / (rho * (1 + inv.eps));
-    const double nuA = (1 + a) * (1 + inv.eps) / W;
+    const auto t = thermo_.evaluate(W, rho0, eps0, e);
+    const double a = t.press / (t.rho * (1 + e.eps));
+    const double nuA = (1 + a) * (1 + e.eps) / W;
     const double nuB = (1 + a) * (1 + qbar - mu * rb2);
     e.f = mu - 1 / (std::max(nuA, nuB) + mu * rb2);
-    e.W = W;
-    e.rho0 = rho0;
-    e.eps = inv.eps;
-    e.T = inv.T;
-    e.inv_flags = inv.flags;
-    ++evaluations_;
     return e;
   }
 
@@ -92,7 +84,7 @@ class KastaunSolver {
     const Eval lo = (*this)(0.0);
     if (!(hi.f >= 0 && lo.f <= 0)) {
       out.bracketed = out.converged = false;
-      out.evaluations = evaluations_;
+      out.evaluations = thermo_.evaluations();
       return out;
     }
     Eval root, far;
@@ -111,15 +103,11 @@ class KastaunSolver {
     if (s.secant_polish) root = secant_polish(root, far);
     out.iterations = st.iterations;
     out.converged = st.converged;
-    out.evaluations = evaluations_;
+    out.evaluations = thermo_.evaluations();
     // (v) velocity from the root, v^i = mu chi (r^i + mu (r.Bc) Bc^i), at the speed of its W.
     const double mu = root.x, chi = 1 / (1 + mu * Bc2_);
     for (int i = 0; i < 3; ++i) out.v[i] = mu * chi * (r_up_[i] + mu * rB_ * Bc_[i]);
-    out.W = root.W;
-    out.rho = root.rho0;
-    out.eps = root.eps;
-    out.T = root.T;
-    out.inversion_flags = root.inv_flags;
+    copy_root_state(root, out);
     return out;
   }
 
@@ -130,9 +118,8 @@ class KastaunSolver {
     const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
     const double v2 = std::min(mu * mu * rb2, v0sq_);
     const double W = 1 / std::sqrt(1 - v2);
-    const double rho = std::clamp(D_ / W, b_.rho_min, b_.rho_max);
     const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
-    return (eos_.temperature(rho, eps0, ye_, T_guess_, method_).flags & eos::kInvBelowEpsLow) != 0;
+    return (thermo_.inversion_flags(D_ / W, eps0) & eos::kInvBelowEpsLow) != 0;
   }
 
   // The clamped region [mu_c, root] found by bisection on clamped_low; if f > 0 just below mu_c,
@@ -155,14 +142,10 @@ class KastaunSolver {
   double v0_squared() const { return v0sq_; }
 
  private:
-  const E& eos_;
-  const eos::Bounds& b_;
-  eos::InversionMethod method_;
-  double D_, ye_;
+  MasterEos<E> thermo_;
+  double D_;
   double q_ = 0, r2_ = 0, Bc2_ = 0, rB_ = 0, rperp2_Bc2_ = 0, h_min_ = 1, v0sq_ = 0;
   Vec3 r_low_{}, r_up_{}, Bc_{};
-  double T_guess_ = 0;  // none yet
-  int evaluations_ = 0;
 };
 
 }  // namespace remnant::con2prim

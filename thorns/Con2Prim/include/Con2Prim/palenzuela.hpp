@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "Con2Prim/master_eos.hpp"
 #include "Con2Prim/root_finding.hpp"
 #include "Con2Prim/root_solution.hpp"
 #include "Con2Prim/settings.hpp"
@@ -24,7 +25,7 @@ class PalenzuelaSolver {
   using Eval = MasterEval;
 
   PalenzuelaSolver(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye)
-      : eos_(eos), b_(eos.bounds()), method_(s.eps_to_T), g_(g), c_(c), ye_(ye) {
+      : thermo_(eos, s.eps_to_T, ye), g_(g), c_(c) {
     const double invD = 1 / c.D;
     q_ = c.tau * invD;
     r_ = g.norm2_down(c.S) * invD * invD;
@@ -40,32 +41,23 @@ class PalenzuelaSolver {
     const double v2 = std::clamp((x2 * r_ + (2 * x + s_) * t_ * t_) / (x2 * xs * xs), 0.0, kMaxV2);
     const double W = 1 / std::sqrt(1 - v2);
     const double rho0 = c_.D / W;
-    const double rho = std::clamp(rho0, b_.rho_min, b_.rho_max);
     const double eps0 = -1 + x / W * (1 - W * W) + W * (1 + q_ - s_ + 0.5 * (s_ / (W * W) + t_ * t_ / x2));
-    const eos::Inversion inv = eos_.temperature(rho, eps0, ye_, T_guess_, method_);
-    T_guess_ = inv.T;
-    const double press = eos_.press(rho, inv.T, ye_);
-    const double h = 1 + inv.eps + press / rho;
+    const auto th = thermo_.evaluate(W, rho0, eps0, e);
+    const double h = 1 + e.eps + th.press / th.rho;
     e.f = x - h * W;
-    e.W = W;
-    e.rho0 = rho0;
-    e.eps = inv.eps;
-    e.T = inv.T;
-    e.inv_flags = inv.flags;
-    ++evaluations_;
     return e;
   }
 
   RootSolution solve(const Settings& s) {
     RootSolution out;
-    const double floor = 0.5 * b_.h_min;  // x = h W >= h_min
+    const double floor = 0.5 * thermo_.bounds().h_min;  // x = h W >= h_min
     Eval lo = (*this)(std::max(1 + q_ - s_, floor));
     Eval hi = (*this)(std::max(2 + 2 * q_ - s_, 2 * lo.x));
     for (int k = 0; k < 60 && lo.f > 0 && lo.x > floor; ++k) lo = (*this)(std::max(0.5 * lo.x, floor));
     for (int k = 0; k < 60 && hi.f < 0; ++k) hi = (*this)(2 * hi.x);
     if (!(lo.f <= 0 && hi.f >= 0)) {
       out.bracketed = out.converged = false;
-      out.evaluations = evaluations_;
+      out.evaluations = thermo_.evaluations();
       return out;
     }
     Eval root, far;
@@ -73,31 +65,22 @@ class PalenzuelaSolver {
     if (s.secant_polish) root = secant_polish(root, far);
     out.iterations = st.iterations;
     out.converged = st.converged;
-    out.evaluations = evaluations_;
+    out.evaluations = thermo_.evaluations();
     // v_i = (S_i + (B.S) B_i / z) / (z + B^2), z = D x = rho h W^2.
     const double z = c_.D * root.x, B2 = g_.norm2_up(c_.B), BS = dot(c_.S, c_.B);
     const Vec3 B_low = g_.lower(c_.B);
     Vec3 v_low;
     for (int i = 0; i < 3; ++i) v_low[i] = (c_.S[i] + BS * B_low[i] / z) / (z + B2);
     out.v = g_.raise(v_low);
-    out.W = root.W;
-    out.rho = root.rho0;
-    out.eps = root.eps;
-    out.T = root.T;
-    out.inversion_flags = root.inv_flags;
+    copy_root_state(root, out);
     return out;
   }
 
  private:
-  const E& eos_;
-  const eos::Bounds& b_;
-  eos::InversionMethod method_;
+  MasterEos<E> thermo_;
   const Metric3& g_;
   const Conserved& c_;
-  double ye_;
   double q_ = 0, r_ = 0, s_ = 0, t_ = 0;
-  double T_guess_ = 0;
-  int evaluations_ = 0;
 };
 
 }  // namespace remnant::con2prim
