@@ -31,6 +31,7 @@ void fill_ghosts(const Level& L, const ScalarEquation& eq, std::vector<double>& 
   for (int d = 0; d < 3; ++d) {
     if (!s.used(d)) continue;
     for (int side = 0; side < 2; ++side) {
+      if (s.boundary[d][side] == Boundary::interface) continue;
       const Level::GhostFace& gf = L.ghost_faces[d][side];
       const std::ptrdiff_t *g = gf.ghost.data(), *in = gf.inner.data(), *mi = gf.mirror.data();
       const std::size_t count = gf.ghost.size();

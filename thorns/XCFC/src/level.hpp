@@ -50,6 +50,10 @@ struct Level {
   explicit Level(const GridShape& s);
   std::size_t cells() const { return shape.cells(); }
   std::ptrdiff_t at(int i, int j, int k) const { return (i + g[0]) + (j + g[1]) * st[1] + (k + g[2]) * st[2]; }
+  std::ptrdiff_t at_cell(std::size_t q) const {  // ghosted offset of interior cell q
+    const auto n0 = static_cast<std::size_t>(shape.n[0]), n1 = static_cast<std::size_t>(shape.n[1]);
+    return at(static_cast<int>(q % n0), static_cast<int>((q / n0) % n1), static_cast<int>(q / (n0 * n1)));
+  }
   std::size_t cell(int i, int j, int k) const {
     return static_cast<std::size_t>(i) + static_cast<std::size_t>(shape.n[0]) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(shape.n[1]) * k);
   }

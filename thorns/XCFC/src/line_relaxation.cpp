@@ -86,8 +86,8 @@ void set_line_ends(Level& L, const ScalarEquation& eq) {
                : eq.falloff == 1.0 ? ratio
                : eq.falloff == 2.0 ? L.robin2[d][side][static_cast<std::size_t>(t)]
                                    : std::pow(ratio, eq.falloff);
-        } else if (bc == Boundary::origin && s.used(1) && s.origin_flips_theta()) {
-          c1 = 0.0;  // the mirror cell lies on another line: its value is held
+        } else if (bc == Boundary::interface || (bc == Boundary::origin && s.used(1) && s.origin_flips_theta())) {
+          c1 = 0.0;  // a patch interface, or the mirror cell lies on another line: the ghost is held
         }
         L.end_c1[d][side][static_cast<std::size_t>(t)] = c1;
       }

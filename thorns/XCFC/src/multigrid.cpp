@@ -16,6 +16,7 @@
 #include "level.hpp"
 #include "level_ops.hpp"
 #include "line_relaxation.hpp"
+#include "point_relaxation.hpp"
 #include "transfers.hpp"
 #include "work_partition.hpp"
 
@@ -79,25 +80,13 @@ struct Multigrid::Impl {
     if (l == 0) relaxed_fine += n;
   }
 
-  static void apply(const Level& L, const std::vector<double>& u, std::vector<double>& out, const Range& R) {
-    const Ops o(L);
-    const double* uu = u.data();
-    double* r = out.data();
-    dispatch(L.shape.dimension, [&](auto D) {
-      for_cells(L, R, [&](std::size_t q, std::ptrdiff_t p) {
-        const double uc = uu[p];
-        r[q] = o.template sigma<D()>(uu, p, q) - o.diag[q] * uc - o.source(q, uc);
-      });
-    });
-  }
-
   // r = f - A(u) on the owned cells; returns max|r| over all ranks (a max is exact in any order).
   double residual(std::size_t l, const ScalarEquation& eq) {
     Level& L = levels[l];
     work.halo(l, L.u);
     fill_ghosts(L, eq, L.u, false);
     const Range R = work.range(l);
-    apply(L, L.u, L.r, R);
+    apply_operator(L, L.u, L.r, R);
     double m = 0;
     double* r = L.r.data();
     const double* f = L.f.data();
@@ -128,39 +117,17 @@ struct Multigrid::Impl {
 
   // Red-black Gauss-Seidel, one Newton step per cell. A colour's cells read only the other colour:
   // with the halo planes exchanged between colours, the owned slab is updated as in one rank.
-  template <int D>
-  void smooth_dim(std::size_t l, const ScalarEquation& eq, int sweeps) {
+  void smooth(std::size_t l, const ScalarEquation& eq, int sweeps) {
     Level& L = levels[l];
-    const GridShape& s = L.shape;
-    const Ops o(L);
-    double* u = L.u.data();
-    const bool nonlinear = o.nonlinear();
     const Range R = work.range(l);
     long long n = 0;
     for (int sweep = 0; sweep < sweeps; ++sweep)
       for (int colour = 0; colour < 2; ++colour) {
         work.halo(l, L.u);
         fill_ghosts(L, eq, L.u, false);
-        for (int k = R.k0; k < R.k1; ++k)
-          for (int j = R.j0; j < R.j1; ++j) {
-            const int i0 = (j + k + colour) & 1;
-            n += (s.n[0] - i0 + 1) / 2;
-            std::size_t q = L.cell(i0, j, k);
-            std::ptrdiff_t p = L.at(i0, j, k);
-            for (int i = i0; i < s.n[0]; i += 2, q += 2, p += 2) {
-              const double uc = u[p];
-              const double res = o.sigma<D>(u, p, q) - o.diag[q] * uc - o.source(q, uc) - o.f[q];
-              const double jac = -o.diag[q] - o.source_derivative(q, uc);
-              double un = uc - res / jac;
-              if (nonlinear && !(un > 0.1 * uc)) un = 0.5 * uc;  // keep psi-like unknowns positive
-              u[p] = un;
-            }
-          }
+        n += red_black_pass(L, R, colour);
       }
     count(l, n);
-  }
-  void smooth(std::size_t l, const ScalarEquation& eq, int sweeps) {
-    dispatch(levels[l].shape.dimension, [&](auto D) { smooth_dim<D()>(l, eq, sweeps); });
   }
 
   // One zebra pass. Distributed 2D levels: lines across the slabs (d = s) are local to the slab and
@@ -263,7 +230,7 @@ struct Multigrid::Impl {
     fill_ghosts(C, eq, C.u, false);
     C.ubar = C.u;
     restrict_interior(F, C, F.r, C.f, RF, RC);
-    apply(C, C.ubar, C.r, RC);  // C.r as scratch: the coarse cycle recomputes it before use
+    apply_operator(C, C.ubar, C.r, RC);  // C.r as scratch: the coarse cycle recomputes it before use
     for_cells(C, RC, [&](std::size_t q, std::ptrdiff_t) { C.f[q] += C.r[q]; });
     // 2D: the lines along the split direction read f across all slabs.
     if (C.shape.dimension == 2) work.replicate(l + 1, C.f, false);
@@ -446,6 +413,21 @@ std::vector<double> Multigrid::with_ghosts(const ScalarEquation& eq, const std::
   for_cells(L, full_range(L), [&](std::size_t q, std::ptrdiff_t p) { a[static_cast<std::size_t>(p)] = u[q]; });
   fill_ghosts(L, eq, a, false);
   return a;
+}
+
+void Multigrid::prepare(const ScalarEquation& eq) { impl_->set_fine_equation(eq); }
+
+void Multigrid::cycle(const ScalarEquation& eq, std::vector<double>& u, const std::vector<double>& f,
+                      const SolveSettings& s) {
+  Impl& m = *impl_;
+  Level& L = m.levels[0];
+  m.load(u);
+  L.f.assign(f.begin(), f.end());
+  m.set_coarse_equations(eq);
+  if (s.direct_1d && L.shape.dimension == 1) m.smooth_lines(0, eq, 0);
+  else m.vcycle(0, eq, s);
+  m.work.replicate(0, L.u, true);
+  m.store(u);
 }
 
 std::ptrdiff_t Multigrid::ghosted_index(int i, int j, int k) const { return impl_->levels[0].at(i, j, k); }

@@ -31,7 +31,8 @@ ScalarEquation cartesian_component_equation(const GridShape& s, int a) {
     for (int side = 0; side < 2; ++side) {
       double p = 1;
       switch (s.boundary[d][side]) {
-        case Boundary::outer: break;
+        case Boundary::outer:
+        case Boundary::interface: break;
         case Boundary::reflect:
           // Cartesian planes flip the normal component; the spherical equator and the cylindrical
           // z = 0 plane flip z.

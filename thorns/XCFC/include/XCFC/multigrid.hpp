@@ -89,6 +89,12 @@ class Multigrid {
   std::array<std::ptrdiff_t, 3> ghosted_strides() const;
   const CellFrames& frames() const;
 
+  // The base level of a composite (AMR) solve: prepare() takes the equation, cycle() does one FAS
+  // V-cycle of A(u) = f (A(u) = Lap u - k u - s0 - s1/u - s7/u^7; interior arrays, complete on every
+  // rank) from u, in place. 1D grids take one direct line solve instead (SolveSettings::direct_1d).
+  void prepare(const ScalarEquation& eq);
+  void cycle(const ScalarEquation& eq, std::vector<double>& u, const std::vector<double>& f, const SolveSettings& s);
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

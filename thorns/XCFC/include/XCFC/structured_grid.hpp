@@ -14,7 +14,9 @@ enum class Boundary {
   outer,    // far field: Robin (1/r^p fall-off) or Dirichlet values
   reflect,  // symmetry plane (Cartesian planes, the spherical equator theta = pi/2)
   axis,     // cylindrical R = 0, spherical theta = 0 or pi
-  origin    // spherical r = 0
+  origin,   // spherical r = 0
+  interface // a refined patch's face inside the domain: its ghosts are filled by the composite
+            // solver (neighbour patches, coarse-fine interpolation) and held by the smoothers
 };
 
 struct GridShape {

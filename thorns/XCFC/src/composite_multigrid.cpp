@@ -1,0 +1,831 @@
+// Composite FAS multigrid on refined patches (see include/XCFC/composite_multigrid.hpp). Each level
+// ("tier") is a set of patches, each patch a Level with one ghost layer; tier 0 is the base grid as
+// one patch, solved by Multigrid. Ghost values and the coarse windows of the prolongation are affine
+// "recipes" in stored interior values, built once per boundary signature by resolving symmetry
+// mirrors, outer boundaries and coarse-fine interpolation symbolically.
+#include "XCFC/composite_multigrid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <tuple>
+#include <unordered_map>
+#include <utility>
+
+#include "boundary_ghosts.hpp"
+#include "level.hpp"
+#include "level_ops.hpp"
+#include "line_relaxation.hpp"
+#include "point_relaxation.hpp"
+
+namespace remnant::xcfc {
+namespace {
+
+using Cell = std::array<long long, 3>;
+
+// One contribution to a recipe's value: a stored interior value (tier, patch, ghosted offset), the
+// far value or a Dirichlet value at a face point, times w and the parities of the symmetry faces
+// crossed on the way (bit 2d + side of mask).
+struct Term {
+  enum Kind : unsigned char { stored, far, dirichlet };
+  Kind kind = stored;
+  unsigned char mask = 0;
+  int tier = 0, patch = 0;
+  std::ptrdiff_t p = 0;
+  double w = 0;
+  Point3 x{};
+};
+
+struct Recipe {
+  std::size_t target;      // ghosted offset (ghosts) or window index (windows)
+  std::size_t begin, end;  // terms
+};
+
+// Recipes of one boundary signature (Robin fall-off power or Dirichlet): per [tier][patch] the face
+// ghosts of the patch and the cells of its coarse window (footprint plus one coarse cell around).
+struct Recipes {
+  std::vector<Term> terms;
+  std::vector<std::vector<std::vector<Recipe>>> ghosts, window;
+};
+
+// Quadratic Lagrange weights at offset xi (coarse cells) from the centre node of nodes -1, 0, 1.
+std::array<double, 3> quadratic(double xi) { return {0.5 * xi * (xi - 1), 1 - xi * xi, 0.5 * xi * (xi + 1)}; }
+
+}  // namespace
+
+struct CompositeMultigrid::Impl {
+  struct Tier {
+    GridShape shape;                        // the whole domain on this level
+    std::array<int, 3> nb{1, 1, 1};          // cells per patch
+    std::array<long long, 3> blocks{1, 1, 1};  // patches per direction if the level were full
+    std::vector<Level> patches;
+    std::vector<Cell> corner;
+    std::unordered_map<long long, int> find;
+    std::vector<std::vector<char>> covered;  // interior, per patch
+    std::vector<int> parent;                  // patch of tier - 1 holding the footprint
+    std::vector<std::vector<double>> ubar, corr, scratch;  // ghosted, ghosted, interior
+    std::vector<std::size_t> window_size;
+    std::vector<std::array<int, 3>> window_n;
+    // 2D line relaxation: the patches of each row (direction d) that follow each other without a
+    // gap form a run, relaxed as one Level so that lines cross patch boundaries.
+    struct Run {
+      std::vector<int> patches;  // in order along d
+      Level level;
+    };
+    std::array<std::vector<Run>, 2> runs;
+  };
+
+  CompositeLayout layout;
+  std::vector<Tier> tiers;
+  Multigrid base;
+  std::map<std::pair<double, bool>, Recipes> recipes;
+  ScalarEquation base_eq;  // boundary data plus the base coefficients (fine ones restricted)
+  std::vector<double> base_u, base_f;
+
+  Impl(const CompositeLayout& l, MPI_Comm comm) : layout(l), base(l.base, comm) {
+    const GridShape& b = l.base;
+    const int L = l.finest();
+    if (L > 0)
+      for (int d = 0; d < b.dimension; ++d)
+        if (l.patch_cells[d] < 2 || l.patch_cells[d] % 2 != 0 || b.n[d] % l.patch_cells[d] != 0)
+          throw std::invalid_argument("CompositeMultigrid: patch cells must be even and divide the base cells in every used direction");
+    tiers.resize(static_cast<std::size_t>(L) + 1);
+    for (int t = 0; t <= L; ++t) {
+      Tier& T = tiers[static_cast<std::size_t>(t)];
+      T.shape = b;
+      for (int d = 0; d < b.dimension; ++d) {
+        T.shape.n[d] = b.n[d] << t;
+        T.shape.dx[d] = b.dx[d] / (1 << t);
+      }
+      T.nb = t == 0 ? b.n : l.patch_cells;
+      for (int d = 0; d < 3; ++d) {
+        if (!b.used(d)) T.nb[d] = 1;
+        T.blocks[d] = T.shape.n[d] / T.nb[d];
+      }
+      if (t == 0) T.corner.push_back({0, 0, 0});
+      else
+        for (const auto& c : l.patches[static_cast<std::size_t>(t - 1)]) T.corner.push_back({c[0], c[1], c[2]});
+      for (std::size_t p = 0; p < T.corner.size(); ++p) {
+        const Cell& c = T.corner[p];
+        for (int d = 0; d < 3; ++d)
+          if (c[d] % T.nb[d] != 0 || c[d] < 0 || c[d] + T.nb[d] > T.shape.n[d])
+            throw std::invalid_argument("CompositeMultigrid: patch " + std::to_string(p) + " of level " + std::to_string(t) +
+                                        " is not aligned with the patch size or leaves the domain");
+        if (!T.find.emplace(key(T, c), static_cast<int>(p)).second)
+          throw std::invalid_argument("CompositeMultigrid: level " + std::to_string(t) + " lists a patch twice");
+        T.patches.emplace_back(patch_shape_of(t, c));
+      }
+      for (auto& P : T.patches) T.covered.emplace_back(P.cells(), 0);
+      T.ubar.resize(T.patches.size());
+      T.corr.resize(T.patches.size());
+      T.scratch.resize(T.patches.size());
+    }
+    // Parents and covered cells.
+    for (int t = 1; t <= L; ++t) {
+      Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
+      for (std::size_t p = 0; p < T.patches.size(); ++p) {
+        Cell cc{};
+        for (int d = 0; d < 3; ++d) cc[d] = b.used(d) ? T.corner[p][d] / 2 : 0;
+        const int parent = locate(t - 1, cc);
+        if (parent < 0)
+          throw std::invalid_argument("CompositeMultigrid: a patch of level " + std::to_string(t) + " is not nested in level " +
+                                      std::to_string(t - 1));
+        T.parent.push_back(parent);
+        const Level& P = T.patches[p];
+        for (int k = 0; k < P.shape.n[2]; ++k)
+          for (int j = 0; j < P.shape.n[1]; ++j)
+            for (int i = 0; i < P.shape.n[0]; ++i)
+              C.covered[static_cast<std::size_t>(parent)][coarse_cell(t, p, i, j, k)] = 1;
+        std::array<int, 3> wn{1, 1, 1};
+        for (int d = 0; d < b.dimension; ++d) wn[d] = T.nb[d] / 2 + 2;
+        T.window_n.push_back(wn);
+        T.window_size.push_back(static_cast<std::size_t>(wn[0]) * wn[1] * wn[2]);
+      }
+    }
+    if (b.dimension == 2)
+      for (int t = 1; t <= L; ++t) build_runs(tiers[static_cast<std::size_t>(t)]);
+  }
+
+  static void build_runs(Tier& T) {
+    for (int d = 0; d < 2; ++d) {
+      const int e = 1 - d;
+      std::map<std::pair<long long, long long>, int> order;  // (transverse, along) block -> patch
+      for (std::size_t p = 0; p < T.corner.size(); ++p)
+        order[{T.corner[p][e] / T.nb[e], T.corner[p][d] / T.nb[d]}] = static_cast<int>(p);
+      std::vector<int> run;
+      long long row = -1, last = -2;
+      auto close = [&] {
+        if (run.empty()) return;
+        GridShape s = T.patches[static_cast<std::size_t>(run.front())].shape;
+        s.n[d] = T.nb[d] * static_cast<int>(run.size());
+        s.boundary[d][1] = T.patches[static_cast<std::size_t>(run.back())].shape.boundary[d][1];
+        T.runs[static_cast<std::size_t>(d)].push_back({run, Level(s)});
+        run.clear();
+      };
+      for (const auto& [k, p] : order) {
+        if (k.first != row || k.second != last + 1) close();
+        row = k.first, last = k.second;
+        run.push_back(p);
+      }
+      close();
+    }
+  }
+
+  // Copies between a run and its patches: interior cells with the transverse ghosts, and the end
+  // ghosts of the run (to_run); interior cells only (from_run).
+  template <bool ToRun>
+  void copy_run(Tier& T, Tier::Run& R, int d, std::vector<double> Level::*array, bool ghosts) {
+    const int e = 1 - d;
+    Level& RL = R.level;
+    for (std::size_t m = 0; m < R.patches.size(); ++m) {
+      Level& P = T.patches[static_cast<std::size_t>(R.patches[m])];
+      const int n_d = P.shape.n[d], n_e = P.shape.n[e];
+      const int a0 = (ghosts && m == 0) ? -1 : 0, a1 = (ghosts && m + 1 == R.patches.size()) ? n_d + 1 : n_d;
+      const int b0 = ghosts ? -1 : 0, b1 = ghosts ? n_e + 1 : n_e;
+      for (int b = b0; b < b1; ++b)
+        for (int a = a0; a < a1; ++a) {
+          if ((a < 0 || a >= n_d) && (b < 0 || b >= n_e)) continue;  // corners
+          std::array<int, 2> pl{}, rl{};
+          pl[d] = a, pl[e] = b;
+          rl[d] = a + static_cast<int>(m) * n_d, rl[e] = b;
+          const bool interior = a >= 0 && a < n_d && b >= 0 && b < n_e;
+          if (ghosts || interior) {
+            if (array == &Level::u) {
+              double& x = P.u[static_cast<std::size_t>(P.at(pl[0], pl[1], 0))];
+              double& y = RL.u[static_cast<std::size_t>(RL.at(rl[0], rl[1], 0))];
+              if constexpr (ToRun) y = x; else x = y;
+            } else if (interior) {
+              double& x = (P.*array)[P.cell(pl[0], pl[1], 0)];
+              double& y = (RL.*array)[RL.cell(rl[0], rl[1], 0)];
+              if constexpr (ToRun) y = x; else x = y;
+            }
+          }
+        }
+    }
+  }
+
+  static long long key(const Tier& T, const Cell& c) {
+    return c[0] / T.nb[0] + T.blocks[0] * (c[1] / T.nb[1] + T.blocks[1] * (c[2] / T.nb[2]));
+  }
+
+  GridShape patch_shape_of(int t, const Cell& c) const {
+    const Tier& T = tiers[static_cast<std::size_t>(t)];
+    GridShape s = T.shape;
+    for (int d = 0; d < s.dimension; ++d) {
+      s.n[d] = T.nb[d];
+      s.lo[d] = T.shape.lo[d] + static_cast<double>(c[d]) * T.shape.dx[d];
+      if (c[d] > 0) s.boundary[d][0] = Boundary::interface;
+      if (c[d] + T.nb[d] < T.shape.n[d]) s.boundary[d][1] = Boundary::interface;
+    }
+    return s;
+  }
+
+  // The patch of tier t holding the in-domain cell I, or -1.
+  int locate(int t, const Cell& I) const {
+    const Tier& T = tiers[static_cast<std::size_t>(t)];
+    Cell c{};
+    for (int d = 0; d < 3; ++d) c[d] = I[d] - I[d] % T.nb[d];
+    const auto it = T.find.find(key(T, c));
+    return it == T.find.end() ? -1 : it->second;
+  }
+
+  // Interior index, in the parent patch, of the coarse cell holding fine cell (i, j, k) of patch p.
+  std::size_t coarse_cell(int t, std::size_t p, int i, int j, int k) const {
+    const Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
+    const Cell& F = T.corner[p];
+    const Cell& Pc = C.corner[static_cast<std::size_t>(T.parent[p])];
+    const std::array<int, 3> f{i, j, k};
+    std::array<int, 3> g{0, 0, 0};
+    for (int d = 0; d < 3; ++d)
+      if (used(d)) g[d] = static_cast<int>((F[d] + f[d]) / 2 - Pc[d]);
+    return C.patches[static_cast<std::size_t>(T.parent[p])].cell(g[0], g[1], g[2]);
+  }
+  bool used(int d) const { return layout.base.used(d); }
+
+  // ---- recipes -----------------------------------------------------------------------------------
+  // Appends the terms of the value at cell I of tier t (any cell within reach of the domain).
+  void expand(int t, Cell I, double w, unsigned mask, double falloff, bool dirichlet, std::vector<Term>& out) const {
+    const Tier& T = tiers[static_cast<std::size_t>(t)];
+    const GridShape& s = T.shape;
+    for (int d = 0; d < s.dimension; ++d) {
+      if (I[d] >= 0 && I[d] < s.n[d]) continue;
+      const int side = I[d] < 0 ? 0 : 1;
+      const Boundary kind = s.boundary[d][side];
+      if (kind == Boundary::outer) {
+        Cell in = I;
+        in[d] = side == 0 ? 0 : s.n[d] - 1;
+        const Point3 xg = s.point(static_cast<int>(I[0]), static_cast<int>(I[1]), static_cast<int>(I[2]));
+        if (dirichlet) {
+          Term f;
+          f.kind = Term::dirichlet, f.mask = static_cast<unsigned char>(mask), f.w = 2 * w, f.x = xg;
+          f.x[d] = s.face(d, side == 0 ? 0 : s.n[d]);
+          out.push_back(f);
+          return expand(t, in, -w, mask, falloff, dirichlet, out);
+        }
+        const Point3 Xi = coords::to_cartesian(s.coordinates, s.point(static_cast<int>(in[0]), static_cast<int>(in[1]), static_cast<int>(in[2])));
+        const Point3 Xg = coords::to_cartesian(s.coordinates, xg);
+        const double rho = std::pow(std::hypot(Xi[0], Xi[1], Xi[2]) / std::hypot(Xg[0], Xg[1], Xg[2]), falloff);
+        Term f;
+        f.kind = Term::far, f.mask = static_cast<unsigned char>(mask), f.w = w * (1 - rho);
+        out.push_back(f);
+        return expand(t, in, w * rho, mask, falloff, dirichlet, out);
+      }
+      I[d] = side == 0 ? -1 - I[d] : 2 * static_cast<long long>(s.n[d]) - 1 - I[d];
+      if (kind == Boundary::origin && s.used(1) && s.origin_flips_theta()) I[1] = s.n[1] - 1 - I[1];
+      return expand(t, I, w, mask ^ (1u << (2 * d + side)), falloff, dirichlet, out);
+    }
+    const int p = locate(t, I);
+    if (p >= 0) {
+      const Cell& c = T.corner[static_cast<std::size_t>(p)];
+      Term v;
+      v.mask = static_cast<unsigned char>(mask), v.tier = t, v.patch = p, v.w = w;
+      v.p = T.patches[static_cast<std::size_t>(p)].at(static_cast<int>(I[0] - c[0]), static_cast<int>(I[1] - c[1]),
+                                                      static_cast<int>(I[2] - c[2]));
+      out.push_back(v);
+      return;
+    }
+    if (t == 0) throw std::logic_error("CompositeMultigrid: base cell not found");
+    // Not on this level: tensor-product quadratic interpolation of the coarser level.
+    std::array<std::array<double, 3>, 3> wq{};
+    Cell C{};
+    for (int d = 0; d < 3; ++d) {
+      wq[d] = {0, 1, 0};
+      C[d] = I[d];
+      if (!s.used(d)) continue;
+      C[d] = I[d] >= 0 ? I[d] / 2 : -((1 - I[d]) / 2);
+      wq[d] = quadratic((I[d] - 2 * C[d]) == 1 ? 0.25 : -0.25);
+    }
+    for (int c = 0; c < 3; ++c)
+      for (int b = 0; b < 3; ++b)
+        for (int a = 0; a < 3; ++a) {
+          const double weight = wq[0][a] * wq[1][b] * wq[2][c];
+          if (weight == 0) continue;
+          expand(t - 1, {C[0] + a - 1, C[1] + b - 1, C[2] + c - 1}, w * weight, mask, falloff, dirichlet, out);
+        }
+  }
+
+  // Appends one recipe, its equal references merged.
+  static void add_recipe(Recipes& R, std::vector<Recipe>& list, std::size_t target, std::vector<Term>& terms) {
+    std::sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) {
+      return std::tie(a.kind, a.tier, a.patch, a.p, a.mask) < std::tie(b.kind, b.tier, b.patch, b.p, b.mask);
+    });
+    const std::size_t begin = R.terms.size();
+    for (const Term& x : terms) {
+      Term* last = R.terms.size() > begin ? &R.terms.back() : nullptr;
+      if (last && x.kind != Term::dirichlet && last->kind == x.kind && last->tier == x.tier && last->patch == x.patch &&
+          last->p == x.p && last->mask == x.mask)
+        last->w += x.w;
+      else
+        R.terms.push_back(x);
+    }
+    list.push_back({target, begin, R.terms.size()});
+    terms.clear();
+  }
+
+  const Recipes& recipes_for(const ScalarEquation& eq) {
+    const std::pair<double, bool> sig{eq.dirichlet ? 0.0 : eq.falloff, static_cast<bool>(eq.dirichlet)};
+    auto it = recipes.find(sig);
+    if (it != recipes.end()) return it->second;
+    Recipes& R = recipes[sig];
+    R.ghosts.resize(tiers.size());
+    R.window.resize(tiers.size());
+    std::vector<Term> terms;
+    for (int t = 1; t < static_cast<int>(tiers.size()); ++t) {
+      const Tier& T = tiers[static_cast<std::size_t>(t)];
+      R.ghosts[static_cast<std::size_t>(t)].resize(T.patches.size());
+      R.window[static_cast<std::size_t>(t)].resize(T.patches.size());
+      for (std::size_t p = 0; p < T.patches.size(); ++p) {
+        const Level& P = T.patches[p];
+        const Cell& c = T.corner[p];
+        auto& gl = R.ghosts[static_cast<std::size_t>(t)][p];
+        for (int d = 0; d < 3; ++d) {
+          if (!used(d)) continue;
+          const int e1 = (d + 1) % 3, e2 = (d + 2) % 3;
+          for (int side = 0; side < 2; ++side)
+            for (int t2 = 0; t2 < P.shape.n[e2]; ++t2)
+              for (int t1 = 0; t1 < P.shape.n[e1]; ++t1) {
+                std::array<int, 3> g{};
+                g[d] = side == 0 ? -1 : P.shape.n[d], g[e1] = t1, g[e2] = t2;
+                expand(t, {c[0] + g[0], c[1] + g[1], c[2] + g[2]}, 1.0, 0, sig.first, sig.second, terms);
+                add_recipe(R, gl, static_cast<std::size_t>(P.at(g[0], g[1], g[2])), terms);
+              }
+        }
+        auto& wl = R.window[static_cast<std::size_t>(t)][p];
+        const auto& wn = T.window_n[p];
+        std::size_t w = 0;
+        for (int k = 0; k < wn[2]; ++k)
+          for (int j = 0; j < wn[1]; ++j)
+            for (int i = 0; i < wn[0]; ++i, ++w) {
+              const std::array<int, 3> a{i, j, k};
+              Cell I{};
+              for (int d = 0; d < 3; ++d) I[d] = used(d) ? c[d] / 2 + a[d] - 1 : 0;
+              expand(t - 1, I, 1.0, 0, sig.first, sig.second, terms);
+              add_recipe(R, wl, w, terms);
+            }
+      }
+    }
+    return R;
+  }
+
+  // Parity factor of each crossing mask.
+  static std::array<double, 64> parity_factors(const ScalarEquation& eq) {
+    std::array<double, 64> f{};
+    for (unsigned m = 0; m < 64; ++m) {
+      double v = 1;
+      for (int b = 0; b < 6; ++b)
+        if (m & (1u << b)) v *= eq.parity[b / 2][b % 2];
+      f[m] = v;
+    }
+    return f;
+  }
+
+  // Value of a recipe over the arrays `field(tier, patch)` (ghosted); homogeneous: a correction
+  // (far and Dirichlet values zero).
+  template <class Field>
+  static double evaluate(const Recipes& R, const Recipe& r, const std::array<double, 64>& par, const ScalarEquation& eq,
+                         bool homogeneous, Field&& field) {
+    double v = 0;
+    for (std::size_t m = r.begin; m < r.end; ++m) {
+      const Term& x = R.terms[m];
+      const double w = par[x.mask] * x.w;
+      if (x.kind == Term::stored) v += w * field(x.tier, x.patch)[static_cast<std::size_t>(x.p)];
+      else if (!homogeneous) v += w * (x.kind == Term::far ? eq.far_value : eq.dirichlet(x.x));
+    }
+    return v;
+  }
+
+  // ---- equation set-up --------------------------------------------------------------------------
+  static void add_mode_term(Level& L, AngularMode mode) {
+    L.k = L.k_eq;
+    if (mode == AngularMode::none) return;
+    const auto& mk = L.mode_k[static_cast<int>(mode)];
+    for (std::size_t q = 0; q < L.k.size(); ++q) L.k[q] += mk[q];
+  }
+
+  // Volume-weighted restriction of interior values of every patch of tier t into its parent's
+  // covered cells (interior arrays via accessors).
+  template <class Fine, class Coarse>
+  void restrict_tier(int t, Fine&& fine, Coarse&& coarse) {
+    Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
+    for (std::size_t p = 0; p < T.patches.size(); ++p) {
+      const Level& P = T.patches[p];
+      const Level& Q = C.patches[static_cast<std::size_t>(T.parent[p])];
+      std::vector<double>& sum = C.scratch[static_cast<std::size_t>(T.parent[p])];
+      sum.assign(Q.cells(), 0.0);
+      std::vector<double> vol(Q.cells(), 0.0);
+      for (int k = 0; k < P.shape.n[2]; ++k)
+        for (int j = 0; j < P.shape.n[1]; ++j)
+          for (int i = 0; i < P.shape.n[0]; ++i) {
+            const std::size_t q = P.cell(i, j, k), qc = coarse_cell(t, p, i, j, k);
+            sum[qc] += P.volume[q] * fine(p, q);
+            vol[qc] += P.volume[q];
+          }
+      for (std::size_t qc = 0; qc < Q.cells(); ++qc)
+        if (vol[qc] > 0) coarse(static_cast<std::size_t>(T.parent[p]), qc) = sum[qc] / vol[qc];
+    }
+  }
+
+  // The solution in the covered cells of tier t - 1 from the patches of tier t (ghosts filled): the
+  // children's mean minus (h^2 / 8) u_dd per direction, u_dd from the children's second differences.
+  // The composite discretisation reads covered values as point values (in the stencils of the
+  // neighbouring coarse leaf cells and in the fine ghosts' interpolation); a plain or volume-weighted
+  // mean would be off by O(H^2) there, an O(1) truncation error along the interface.
+  void restrict_point_values(int t) {
+    Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
+    std::array<int, 3> half{1, 1, 1};
+    int dims = 0;
+    for (int d = 0; d < 3; ++d)
+      if (used(d)) half[d] = T.nb[d] / 2, ++dims;
+    const int children = 1 << dims;
+    for (std::size_t p = 0; p < T.patches.size(); ++p) {
+      const Level& P = T.patches[p];
+      Level& Q = C.patches[static_cast<std::size_t>(T.parent[p])];
+      const Cell& F = T.corner[p];
+      const Cell& Pc = C.corner[static_cast<std::size_t>(T.parent[p])];
+      const double* u = P.u.data();
+      for (int ck = 0; ck < half[2]; ++ck)
+        for (int cj = 0; cj < half[1]; ++cj)
+          for (int ci = 0; ci < half[0]; ++ci) {
+            const std::array<int, 3> c{ci, cj, ck};
+            std::array<int, 3> f0{0, 0, 0}, cc{0, 0, 0};
+            for (int d = 0; d < 3; ++d)
+              if (used(d)) f0[d] = 2 * c[d], cc[d] = static_cast<int>(F[d] / 2 - Pc[d]) + c[d];
+            const std::ptrdiff_t g0 = P.at(f0[0], f0[1], f0[2]);
+            double mean = 0, curvature = 0;
+            for (int b = 0; b < children; ++b) {
+              std::ptrdiff_t g = g0;
+              int bit = 0;
+              for (int d = 0; d < 3; ++d)
+                if (used(d)) g += ((b >> bit++) & 1) * P.st[d];
+              mean += u[g];
+              bit = 0;
+              for (int d = 0; d < 3; ++d) {
+                if (!used(d)) continue;
+                const std::ptrdiff_t sd = P.st[d];
+                if (((b >> bit++) & 1) == 0) curvature += 0.5 * (u[g + 2 * sd] - u[g + sd] - u[g] + u[g - sd]);
+              }
+            }
+            Q.u[static_cast<std::size_t>(Q.at(cc[0], cc[1], cc[2]))] = mean / children - curvature / (8.0 * (children / 2));
+          }
+    }
+  }
+
+  void set_equation(const CompositeEquation& eq) {
+    auto take = [](const CompositeField& f, int t, std::size_t p, std::size_t n, std::vector<double>& out, bool optional) {
+      const std::vector<double>* src = f.base.empty() ? nullptr : t == 0 ? &f.base : &f.patch[static_cast<std::size_t>(t - 1)][p];
+      if (!src) {
+        if (optional) out.clear();
+        else out.assign(n, 0.0);
+      } else {
+        if (src->size() != n) throw std::invalid_argument("CompositeMultigrid: a coefficient array has the wrong size");
+        out.assign(src->begin(), src->end());
+      }
+    };
+    for (int t = 0; t < static_cast<int>(tiers.size()); ++t)
+      for (std::size_t p = 0; p < tiers[static_cast<std::size_t>(t)].patches.size(); ++p) {
+        Level& P = tiers[static_cast<std::size_t>(t)].patches[p];
+        take(eq.k, t, p, P.cells(), P.k_eq, false);
+        take(eq.s0, t, p, P.cells(), P.s0, false);
+        take(eq.s1, t, p, P.cells(), P.s1, true);
+        take(eq.s7, t, p, P.cells(), P.s7, true);
+      }
+    // Covered cells take the restriction of the finer coefficients (finest first).
+    for (int t = static_cast<int>(tiers.size()) - 1; t >= 1; --t) {
+      auto& T = tiers[static_cast<std::size_t>(t)];
+      auto& C = tiers[static_cast<std::size_t>(t - 1)];
+      auto pass = [&](std::vector<double> Level::*a) {
+        if ((T.patches[0].*a).empty()) return;
+        restrict_tier(t, [&](std::size_t p, std::size_t q) { return (T.patches[p].*a)[q]; },
+                      [&](std::size_t p, std::size_t q) -> double& { return (C.patches[p].*a)[q]; });
+      };
+      pass(&Level::k_eq), pass(&Level::s0), pass(&Level::s1), pass(&Level::s7);
+    }
+    for (auto& T : tiers)
+      for (auto& P : T.patches) {
+        add_mode_term(P, eq.boundary.mode);
+        P.f.assign(P.cells(), 0.0);
+        P.r.assign(P.cells(), 0.0);
+        if (P.u.size() != P.ghosted_size) P.u.assign(P.ghosted_size, 0.0);
+        set_line_ends(P, eq.boundary);
+        factor_lines(P);
+      }
+    for (auto& T : tiers)
+      for (int d = 0; d < 2; ++d)
+        for (auto& R : T.runs[static_cast<std::size_t>(d)]) {
+          Level& RL = R.level;
+          const Level& P0 = T.patches[static_cast<std::size_t>(R.patches.front())];
+          for (auto a : {&Level::k_eq, &Level::s0, &Level::s1, &Level::s7}) {
+            if ((P0.*a).empty()) {
+              (RL.*a).clear();
+              continue;
+            }
+            (RL.*a).assign(RL.cells(), 0.0);
+            copy_run<true>(T, R, d, a, false);
+          }
+          add_mode_term(RL, eq.boundary.mode);
+          RL.f.assign(RL.cells(), 0.0);
+          RL.r.assign(RL.cells(), 0.0);
+          RL.u.assign(RL.ghosted_size, 0.0);
+          set_line_ends(RL, eq.boundary);
+          factor_lines(RL);
+        }
+    base_eq = eq.boundary;
+    const Level& B = tiers[0].patches[0];
+    base_eq.k = B.k_eq, base_eq.s0 = B.s0, base_eq.s1 = B.s1, base_eq.s7 = B.s7;
+    base.prepare(base_eq);
+  }
+
+  // ---- operations on a tier ---------------------------------------------------------------------
+  void fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par) {
+    Tier& T = tiers[static_cast<std::size_t>(t)];
+    if (t == 0) return fill_ghosts(T.patches[0], eq, T.patches[0].u, false);
+    const Recipes& R = recipes_for(eq);
+    auto u = [&](int tier, int patch) -> const std::vector<double>& {
+      return tiers[static_cast<std::size_t>(tier)].patches[static_cast<std::size_t>(patch)].u;
+    };
+    for (std::size_t p = 0; p < T.patches.size(); ++p)
+      for (const Recipe& r : R.ghosts[static_cast<std::size_t>(t)][p])
+        T.patches[p].u[r.target] = evaluate(R, r, par, eq, false, u);
+  }
+
+  // Relaxation of a tier's patches: zebra lines in both directions (2D) or red-black points (1D,
+  // 3D), ghosts refilled before each pass and held during it. (Exact line solves of whole 1D
+  // patches with held ends leave kinks at the patch ends that the coarse correction removes slowly.)
+  // Before each fill the covered cells below take the current fine values: the interface ghosts
+  // read them, and a stale coarse value would leave a residual at the interface after the cycle.
+  void relax(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
+    Tier& T = tiers[static_cast<std::size_t>(t)];
+    const int dim = T.shape.dimension;
+    auto refresh = [&] {
+      fill(t, eq, par);
+      restrict_point_values(t);
+      fill(t, eq, par);
+    };
+    for (int sweep = 0; sweep < sweeps; ++sweep) {
+      if (dim == 2) {
+        for (int d = 0; d < dim; ++d)
+          for (int colour = 0; colour < 2; ++colour) {
+            refresh();
+            for (auto& R : T.runs[static_cast<std::size_t>(d)]) {
+              copy_run<true>(T, R, d, &Level::u, true);
+              if (colour == 0) copy_run<true>(T, R, d, &Level::f, false);
+              const Lines ln(R.level, d);
+              line_pass(R.level, ln, colour, 0, ln.count);
+              copy_run<false>(T, R, d, &Level::u, false);
+            }
+          }
+      } else {
+        for (int colour = 0; colour < 2; ++colour) {
+          refresh();
+          for (auto& P : T.patches) red_black_pass(P, full_range(P), colour);
+        }
+      }
+    }
+  }
+
+  // r = f - A(u) on every patch of the tier (ghosts filled first).
+  void residual(int t, const ScalarEquation& eq, const std::array<double, 64>& par) {
+    fill(t, eq, par);
+    for (auto& P : tiers[static_cast<std::size_t>(t)].patches) {
+      apply_operator(P, P.u, P.r, full_range(P));
+      for (std::size_t q = 0; q < P.cells(); ++q) P.r[q] = P.f[q] - P.r[q];
+    }
+  }
+
+  // Interpolates (quadratic, from the coarse window) `source` of tier t - 1 into the patches of
+  // tier t: added to u (a correction) or replacing it.
+  template <class Field>
+  void interpolate_up(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool correction, Field&& source) {
+    Tier& T = tiers[static_cast<std::size_t>(t)];
+    const Recipes& R = recipes_for(eq);
+    std::vector<double> win;
+    for (std::size_t p = 0; p < T.patches.size(); ++p) {
+      Level& P = T.patches[p];
+      win.assign(T.window_size[p], 0.0);
+      for (const Recipe& r : R.window[static_cast<std::size_t>(t)][p]) win[r.target] = evaluate(R, r, par, eq, correction, source);
+      const auto& wn = T.window_n[p];
+      for (int k = 0; k < P.shape.n[2]; ++k)
+        for (int j = 0; j < P.shape.n[1]; ++j)
+          for (int i = 0; i < P.shape.n[0]; ++i) {
+            const std::array<int, 3> f{i, j, k};
+            std::array<std::array<double, 3>, 3> wq{};
+            std::array<int, 3> c{}, lo{}, hi{};
+            for (int d = 0; d < 3; ++d) {
+              if (used(d)) c[d] = f[d] / 2 + 1, wq[d] = quadratic((f[d] & 1) ? 0.25 : -0.25), lo[d] = 0, hi[d] = 3;
+              else c[d] = 0, wq[d] = {0, 1, 0}, lo[d] = 1, hi[d] = 2;
+            }
+            double v = 0;
+            for (int z = lo[2]; z < hi[2]; ++z)
+              for (int y = lo[1]; y < hi[1]; ++y)
+                for (int x = lo[0]; x < hi[0]; ++x)
+                  v += wq[0][x] * wq[1][y] * wq[2][z] *
+                       win[static_cast<std::size_t>((c[0] + x - 1) + wn[0] * ((c[1] + y - 1) + wn[1] * (c[2] + z - 1)))];
+            double& u = P.u[static_cast<std::size_t>(P.at(i, j, k))];
+            u = correction ? u + v : v;
+          }
+    }
+  }
+
+  // ---- the composite V-cycle --------------------------------------------------------------------
+  void vcycle(const ScalarEquation& eq, const std::array<double, 64>& par, const SolveSettings& s) {
+    const int L = static_cast<int>(tiers.size()) - 1;
+    for (int t = L; t >= 1; --t) {
+      relax(t, eq, par, s.pre_sweeps);
+      residual(t, eq, par);
+      Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
+      restrict_point_values(t);  // ghosts filled by residual()
+      // The restricted residual, kept in r of the coarse patches' covered cells.
+      restrict_tier(t, [&](std::size_t p, std::size_t q) { return T.patches[p].r[q]; },
+                    [&](std::size_t p, std::size_t q) -> double& { return C.patches[p].r[q]; });
+      fill(t - 1, eq, par);
+      for (std::size_t p = 0; p < C.patches.size(); ++p) {
+        Level& Q = C.patches[p];
+        std::vector<double>& Au = C.scratch[p];
+        Au.resize(Q.cells());
+        apply_operator(Q, Q.u, Au, full_range(Q));
+        const auto& cov = C.covered[p];
+        for (std::size_t q = 0; q < Q.cells(); ++q)
+          if (cov[q]) Q.f[q] = Au[q] + Q.r[q];
+        C.ubar[p] = Q.u;
+      }
+    }
+    // Base V-cycle.
+    Level& B = tiers[0].patches[0];
+    base_u.resize(B.cells());
+    for_cells(B, full_range(B), [&](std::size_t q, std::ptrdiff_t p) { base_u[q] = B.u[static_cast<std::size_t>(p)]; });
+    base.cycle(base_eq, base_u, B.f, s);
+    for_cells(B, full_range(B), [&](std::size_t q, std::ptrdiff_t p) { B.u[static_cast<std::size_t>(p)] = base_u[q]; });
+    for (int t = 1; t <= L; ++t) {
+      Tier& C = tiers[static_cast<std::size_t>(t - 1)];
+      for (std::size_t p = 0; p < C.patches.size(); ++p) {
+        const std::vector<double>& u = C.patches[p].u;
+        C.corr[p].resize(u.size());
+        for (std::size_t m = 0; m < u.size(); ++m) C.corr[p][m] = u[m] - C.ubar[p][m];
+      }
+      interpolate_up(t, eq, par, true, [&](int tier, int patch) -> const std::vector<double>& {
+        return tiers[static_cast<std::size_t>(tier)].corr[static_cast<std::size_t>(patch)];
+      });
+      relax(t, eq, par, s.post_sweeps);
+    }
+  }
+
+  // Max |r| and max source scale over the leaf cells.
+  std::pair<double, double> leaf_residual(const ScalarEquation& eq, const std::array<double, 64>& par) {
+    double rmax = 0, smax = 0;
+    for (int t = 0; t < static_cast<int>(tiers.size()); ++t) {
+      Tier& T = tiers[static_cast<std::size_t>(t)];
+      if (t == 0) {
+        Level& B = T.patches[0];
+        fill(0, eq, par);
+        apply_operator(B, B.u, B.r, full_range(B));
+        for (std::size_t q = 0; q < B.cells(); ++q) B.r[q] = -B.r[q];
+      } else {
+        for (auto& P : T.patches) std::fill(P.f.begin(), P.f.end(), 0.0);
+        residual(t, eq, par);
+      }
+      for (std::size_t p = 0; p < T.patches.size(); ++p) {
+        const Level& P = T.patches[p];
+        const Ops o(P);
+        for_cells(P, full_range(P), [&](std::size_t q, std::ptrdiff_t g) {
+          if (T.covered[p][q]) return;
+          const double u = P.u[static_cast<std::size_t>(g)];
+          double sc = std::abs(o.k[q] * u) + std::abs(o.s0[q]);
+          if (o.s1) sc += std::abs(o.s1[q] / u);
+          if (o.s7) sc += std::abs(o.s7[q] / std::pow(u, 7));
+          rmax = std::max(rmax, std::abs(P.r[q]));
+          smax = std::max(smax, sc);
+        });
+      }
+    }
+    return {rmax, smax};
+  }
+
+  void load(const CompositeField& u, bool nonlinear) {
+    for (int t = 0; t < static_cast<int>(tiers.size()); ++t)
+      for (std::size_t p = 0; p < tiers[static_cast<std::size_t>(t)].patches.size(); ++p) {
+        Level& P = tiers[static_cast<std::size_t>(t)].patches[p];
+        const std::vector<double>* src = t == 0 ? &u.base
+                                         : u.patch.size() >= static_cast<std::size_t>(t) &&
+                                                   u.patch[static_cast<std::size_t>(t - 1)].size() > p
+                                             ? &u.patch[static_cast<std::size_t>(t - 1)][p]
+                                             : nullptr;
+        P.u.assign(P.ghosted_size, nonlinear ? 1.0 : 0.0);
+        if (src && src->size() == P.cells())
+          for_cells(P, full_range(P), [&](std::size_t q, std::ptrdiff_t g) { P.u[static_cast<std::size_t>(g)] = (*src)[q]; });
+      }
+  }
+  void store(CompositeField& u) const {
+    u.patch.resize(tiers.size() - 1);
+    for (int t = 0; t < static_cast<int>(tiers.size()); ++t) {
+      const Tier& T = tiers[static_cast<std::size_t>(t)];
+      if (t > 0) u.patch[static_cast<std::size_t>(t - 1)].resize(T.patches.size());
+      for (std::size_t p = 0; p < T.patches.size(); ++p) {
+        const Level& P = T.patches[p];
+        std::vector<double>& dst = t == 0 ? u.base : u.patch[static_cast<std::size_t>(t - 1)][p];
+        dst.resize(P.cells());
+        for_cells(P, full_range(P), [&](std::size_t q, std::ptrdiff_t g) { dst[q] = P.u[static_cast<std::size_t>(g)]; });
+      }
+    }
+  }
+  // Covered cells hold the restriction of the finer solution (finest first).
+  void restrict_solution(const ScalarEquation& eq, const std::array<double, 64>& par) {
+    for (int t = static_cast<int>(tiers.size()) - 1; t >= 1; --t) {
+      fill(t, eq, par);
+      restrict_point_values(t);
+    }
+  }
+};
+
+CompositeMultigrid::CompositeMultigrid(const CompositeLayout& layout, MPI_Comm comm)
+    : impl_(std::make_unique<Impl>(layout, comm)) {}
+CompositeMultigrid::~CompositeMultigrid() = default;
+CompositeMultigrid::CompositeMultigrid(CompositeMultigrid&&) noexcept = default;
+CompositeMultigrid& CompositeMultigrid::operator=(CompositeMultigrid&&) noexcept = default;
+
+const CompositeLayout& CompositeMultigrid::layout() const { return impl_->layout; }
+GridShape CompositeMultigrid::level_shape(int level) const { return impl_->tiers.at(static_cast<std::size_t>(level)).shape; }
+GridShape CompositeMultigrid::patch_shape(int level, int patch) const {
+  return impl_->tiers.at(static_cast<std::size_t>(level)).patches.at(static_cast<std::size_t>(patch)).shape;
+}
+bool CompositeMultigrid::covered(int level, int patch, std::size_t q) const {
+  return impl_->tiers.at(static_cast<std::size_t>(level)).covered.at(static_cast<std::size_t>(patch)).at(q) != 0;
+}
+CompositeField CompositeMultigrid::field(double value) const {
+  CompositeField f;
+  f.base.assign(impl_->tiers[0].patches[0].cells(), value);
+  for (std::size_t t = 1; t < impl_->tiers.size(); ++t) {
+    f.patch.emplace_back();
+    for (const auto& P : impl_->tiers[t].patches) f.patch.back().emplace_back(P.cells(), value);
+  }
+  return f;
+}
+
+SolveStats CompositeMultigrid::solve(const CompositeEquation& eq, CompositeField& u, const SolveSettings& s) {
+  Impl& m = *impl_;
+  m.set_equation(eq);
+  const ScalarEquation& bc = eq.boundary;
+  const auto par = Impl::parity_factors(bc);
+  SolveStats st;
+  if (s.full_multigrid) {
+    // Nested iteration: the base problem (fine coefficients restricted), then interpolated up.
+    SolveSettings bs = s;
+    bs.tolerance = std::max(s.tolerance, 1e-6);
+    m.base_u.assign(m.tiers[0].patches[0].cells(), eq.nonlinear() ? 1.0 : 0.0);
+    m.base.solve(m.base_eq, m.base_u, bs);
+    CompositeField start;
+    start.base = m.base_u;
+    m.load(start, eq.nonlinear());
+    m.base.prepare(m.base_eq);
+    for (int t = 1; t < static_cast<int>(m.tiers.size()); ++t) {
+      m.interpolate_up(t, bc, par, false, [&](int tier, int patch) -> const std::vector<double>& {
+        return m.tiers[static_cast<std::size_t>(tier)].patches[static_cast<std::size_t>(patch)].u;
+      });
+    }
+  } else {
+    m.load(u, eq.nonlinear());
+  }
+  m.restrict_solution(bc, par);
+  auto [res, scale] = m.leaf_residual(bc, par);
+  st.initial_residual = res;
+  st.scale = std::max(scale, s.scale_floor);
+  if (st.scale <= 0) st.scale = 1.0;
+  double maxdiag = 0, umax = 0;
+  for (const auto& T : m.tiers)
+    for (const auto& P : T.patches) {
+      maxdiag = std::max(maxdiag, P.max_diagonal);
+      for (double v : P.u) umax = std::max(umax, std::abs(v));
+    }
+  const double noise = 256 * std::numeric_limits<double>::epsilon() * maxdiag * umax;
+  while (res > std::max(s.tolerance * st.scale, noise) && st.cycles < s.max_cycles) {
+    m.vcycle(bc, par, s);
+    m.restrict_solution(bc, par);
+    ++st.cycles;
+    std::tie(res, scale) = m.leaf_residual(bc, par);
+    st.scale = std::max(scale, s.scale_floor);
+    if (st.scale <= 0) st.scale = 1.0;
+    st.history.push_back(res);
+    if (std::getenv("XCFC_DEBUG"))
+      std::fprintf(stderr, "composite cycle %d residual %.3e (target %.3e)\n", st.cycles, res, s.tolerance * st.scale);
+  }
+  st.residual = res;
+  st.converged = res <= std::max(s.tolerance * st.scale, noise);
+  st.factor = st.cycles > 0 && st.initial_residual > 0 ? std::pow(res / st.initial_residual, 1.0 / st.cycles) : 0.0;
+  m.store(u);
+  return st;
+}
+
+double CompositeMultigrid::residual_norm(const CompositeEquation& eq, const CompositeField& u) {
+  Impl& m = *impl_;
+  m.set_equation(eq);
+  m.load(u, eq.nonlinear());
+  const auto par = Impl::parity_factors(eq.boundary);
+  m.restrict_solution(eq.boundary, par);
+  return m.leaf_residual(eq.boundary, par).first;
+}
+
+}  // namespace remnant::xcfc
