@@ -28,29 +28,30 @@ GridShape grid(int dim) {
   return s;
 }
 
+// Uniform grids: composite fields of one part.
 struct Star {
-  std::vector<double> E, p;
+  CompositeField E, p;
   VectorField S;
   explicit Star(const GridShape& s) {
     const auto slice = tov::polytrope_slice(100.0, 2.0, 0.5);
     const tov::TovStar star(*slice, 1.28e-3);
-    E.resize(s.cells()), p.resize(s.cells());
-    for (auto& c : S) c.assign(s.cells(), 0.0);
+    E.part.assign(1, std::vector<double>(s.cells())), p = E;
+    for (auto& c : S) c.part.assign(1, std::vector<double>(s.cells(), 0.0));
     std::size_t q = 0;
     for (int j = 0; j < s.n[1]; ++j)
       for (int i = 0; i < s.n[0]; ++i, ++q) {
         const tov::TovPoint t = star.at(s.centre(0, i));
-        E[q] = std::pow(t.psi, 6) * t.rho * (1 + t.eps);
-        p[q] = t.press;
-        S[0][q] = 1e-8 * E[q] * std::sin(0.3 * s.centre(0, i));  // a small radial momentum
+        E.part[0][q] = std::pow(t.psi, 6) * t.rho * (1 + t.eps);
+        p.part[0][q] = t.press;
+        S[0].part[0][q] = 1e-8 * E.part[0][q] * std::sin(0.3 * s.centre(0, i));  // a small radial momentum
       }
   }
 };
 
 void solve_all(XcfcSolver& sv, const Star& m, XcfcState& st, const SolveSettings& set, XcfcStats& stats) {
   sv.solve_conformal_factor(m.E, m.S, st, stats, set);
-  std::vector<double> Str(m.E.size());
-  for (std::size_t q = 0; q < Str.size(); ++q) Str[q] = 3 * std::pow(st.psi[q], 6) * m.p[q];
+  CompositeField Str = m.p;
+  for (std::size_t q = 0; q < Str.part[0].size(); ++q) Str.part[0][q] = 3 * std::pow(st.psi.part[0][q], 6) * m.p.part[0][q];
   sv.solve_lapse_and_shift(m.E, m.S, Str, st, stats, set);
 }
 
@@ -94,7 +95,7 @@ void BM_WarmSolve(benchmark::State& state) {
     XcfcState st = base;
     const double f = 1 + 1e-5 * std::sin(0.1 * ++step);
     Star mm = m;
-    for (auto& e : mm.E) e *= f;
+    for (auto& e : mm.E.part[0]) e *= f;
     state.ResumeTiming();
     solve_all(sv, mm, st, set, stats);
   }
@@ -117,17 +118,18 @@ void BM_VCycle(benchmark::State& state) {
   if (state.range(1)) eq.s1.resize(s.cells()), eq.s7.assign(s.cells(), 0.0);
   else eq.k.resize(s.cells());
   for (std::size_t q = 0; q < s.cells(); ++q) {
-    if (state.range(1)) eq.s1[q] = -2 * 3.141592653589793 * m.E[q] * 1.00001;
-    else eq.k[q] = 2 * 3.141592653589793 * m.E[q] * 1.00001 / (st.psi[q] * st.psi[q]);
+    const double E = m.E.part[0][q], psi = st.psi.part[0][q];
+    if (state.range(1)) eq.s1[q] = -2 * 3.141592653589793 * E * 1.00001;
+    else eq.k[q] = 2 * 3.141592653589793 * E * 1.00001 / (psi * psi);
   }
   set.tolerance = 1e-30;
   set.max_cycles = 1;
   set.full_multigrid = false;
   set.direct_1d = false;
-  std::vector<double> u = state.range(1) ? st.psi : st.alpha_psi;
+  std::vector<double> u = state.range(1) ? st.psi.part[0] : st.alpha_psi.part[0];
   for (auto _ : state) {
     std::vector<double> w = u;
-    benchmark::DoNotOptimize(sv.multigrid().solve(eq, w, set));
+    benchmark::DoNotOptimize(sv.multigrid().base().solve(eq, w, set));
   }
 }
 

@@ -86,6 +86,8 @@ struct CompositeMultigrid::Impl {
   std::map<std::pair<double, bool>, Recipes> recipes;
   ScalarEquation base_eq;  // boundary data plus the base coefficients (fine ones restricted)
   std::vector<double> base_u, base_f;
+  std::vector<std::pair<int, int>> part_of;  // (tier, patch) of each part
+  std::vector<PartGeometry> geometry;
 
   Impl(const CompositeLayout& l, MPI_Comm comm) : layout(l), base(l.base, comm) {
     const GridShape& b = l.base;
@@ -149,7 +151,35 @@ struct CompositeMultigrid::Impl {
     }
     if (b.dimension == 2)
       for (int t = 1; t <= L; ++t) build_runs(tiers[static_cast<std::size_t>(t)]);
+    for (int t = 0; t <= L; ++t)
+      for (std::size_t p = 0; p < tiers[static_cast<std::size_t>(t)].patches.size(); ++p) {
+        part_of.emplace_back(t, static_cast<int>(p));
+        const Level& P = tiers[static_cast<std::size_t>(t)].patches[p];
+        PartGeometry g;
+        g.shape = P.shape, g.level = t, g.strides = P.st, g.ghosts = P.g;
+        if (t == 0) {
+          g.shared = &base.frames();
+        } else {
+          g.own.J.assign(P.ghosted_size, Matrix3{});
+          g.own.f.assign(P.ghosted_size, Point3{1, 1, 1});
+          for (int k = -P.g[2]; k < P.shape.n[2] + P.g[2]; ++k)
+            for (int j = -P.g[1]; j < P.shape.n[1] + P.g[1]; ++j)
+              for (int i = -P.g[0]; i < P.shape.n[0] + P.g[0]; ++i) {
+                const Point3 x = P.shape.point(i, j, k);
+                const auto q = static_cast<std::size_t>(P.at(i, j, k));
+                g.own.J[q] = coords::jacobian(P.shape.coordinates, x);
+                g.own.f[q] = coords::metric_diagonal(P.shape.coordinates, x);
+              }
+        }
+        geometry.push_back(std::move(g));
+      }
   }
+  std::size_t part_index(int t, std::size_t p) const {
+    std::size_t i = p;
+    for (int s = 0; s < t; ++s) i += tiers[static_cast<std::size_t>(s)].patches.size();
+    return i;
+  }
+  bool refined() const { return tiers.size() > 1; }
 
   static void build_runs(Tier& T) {
     for (int d = 0; d < 2; ++d) {
@@ -476,8 +506,8 @@ struct CompositeMultigrid::Impl {
   }
 
   void set_equation(const CompositeEquation& eq) {
-    auto take = [](const CompositeField& f, int t, std::size_t p, std::size_t n, std::vector<double>& out, bool optional) {
-      const std::vector<double>* src = f.base.empty() ? nullptr : t == 0 ? &f.base : &f.patch[static_cast<std::size_t>(t - 1)][p];
+    auto take = [&](const CompositeField& f, int t, std::size_t p, std::size_t n, std::vector<double>& out, bool optional) {
+      const std::vector<double>* src = f.empty() ? nullptr : &f.part.at(part_index(t, p));
       if (!src) {
         if (optional) out.clear();
         else out.assign(n, 0.0);
@@ -706,32 +736,30 @@ struct CompositeMultigrid::Impl {
   }
 
   void load(const CompositeField& u, bool nonlinear) {
-    for (int t = 0; t < static_cast<int>(tiers.size()); ++t)
-      for (std::size_t p = 0; p < tiers[static_cast<std::size_t>(t)].patches.size(); ++p) {
-        Level& P = tiers[static_cast<std::size_t>(t)].patches[p];
-        const std::vector<double>* src = t == 0 ? &u.base
-                                         : u.patch.size() >= static_cast<std::size_t>(t) &&
-                                                   u.patch[static_cast<std::size_t>(t - 1)].size() > p
-                                             ? &u.patch[static_cast<std::size_t>(t - 1)][p]
-                                             : nullptr;
-        P.u.assign(P.ghosted_size, nonlinear ? 1.0 : 0.0);
-        if (src && src->size() == P.cells())
-          for_cells(P, full_range(P), [&](std::size_t q, std::ptrdiff_t g) { P.u[static_cast<std::size_t>(g)] = (*src)[q]; });
-      }
-  }
-  void store(CompositeField& u) const {
-    u.patch.resize(tiers.size() - 1);
-    for (int t = 0; t < static_cast<int>(tiers.size()); ++t) {
-      const Tier& T = tiers[static_cast<std::size_t>(t)];
-      if (t > 0) u.patch[static_cast<std::size_t>(t - 1)].resize(T.patches.size());
-      for (std::size_t p = 0; p < T.patches.size(); ++p) {
-        const Level& P = T.patches[p];
-        std::vector<double>& dst = t == 0 ? u.base : u.patch[static_cast<std::size_t>(t - 1)][p];
-        dst.resize(P.cells());
-        for_cells(P, full_range(P), [&](std::size_t q, std::ptrdiff_t g) { dst[q] = P.u[static_cast<std::size_t>(g)]; });
-      }
+    for (std::size_t i = 0; i < part_of.size(); ++i) {
+      Level& P = tiers[static_cast<std::size_t>(part_of[i].first)].patches[static_cast<std::size_t>(part_of[i].second)];
+      P.u.assign(P.ghosted_size, nonlinear ? 1.0 : 0.0);
+      if (i < u.part.size() && u.part[i].size() == P.cells())
+        for_cells(P, full_range(P), [&](std::size_t q, std::ptrdiff_t g) { P.u[static_cast<std::size_t>(g)] = u.part[i][q]; });
     }
   }
+  void store(CompositeField& u) const {
+    u.part.resize(part_of.size());
+    for (std::size_t i = 0; i < part_of.size(); ++i) {
+      const Level& P = tiers[static_cast<std::size_t>(part_of[i].first)].patches[static_cast<std::size_t>(part_of[i].second)];
+      u.part[i].resize(P.cells());
+      for_cells(P, full_range(P), [&](std::size_t q, std::ptrdiff_t g) { u.part[i][q] = P.u[static_cast<std::size_t>(g)]; });
+    }
+  }
+  ScalarEquation base_equation(const CompositeEquation& eq) const {
+    ScalarEquation b = eq.boundary;
+    if (!eq.k.empty()) b.k = eq.k.part[0];
+    if (!eq.s0.empty()) b.s0 = eq.s0.part[0];
+    if (!eq.s1.empty()) b.s1 = eq.s1.part[0];
+    if (!eq.s7.empty()) b.s7 = eq.s7.part[0];
+    return b;
+  }
+
   // Covered cells hold the restriction of the finer solution (finest first).
   void restrict_solution(const ScalarEquation& eq, const std::array<double, 64>& par) {
     for (int t = static_cast<int>(tiers.size()) - 1; t >= 1; --t) {
@@ -743,30 +771,66 @@ struct CompositeMultigrid::Impl {
 
 CompositeMultigrid::CompositeMultigrid(const CompositeLayout& layout, MPI_Comm comm)
     : impl_(std::make_unique<Impl>(layout, comm)) {}
+CompositeMultigrid::CompositeMultigrid(const GridShape& shape, MPI_Comm comm)
+    : CompositeMultigrid(CompositeLayout{shape, {1, 1, 1}, {}}, comm) {}
 CompositeMultigrid::~CompositeMultigrid() = default;
 CompositeMultigrid::CompositeMultigrid(CompositeMultigrid&&) noexcept = default;
 CompositeMultigrid& CompositeMultigrid::operator=(CompositeMultigrid&&) noexcept = default;
 
 const CompositeLayout& CompositeMultigrid::layout() const { return impl_->layout; }
-GridShape CompositeMultigrid::level_shape(int level) const { return impl_->tiers.at(static_cast<std::size_t>(level)).shape; }
-GridShape CompositeMultigrid::patch_shape(int level, int patch) const {
-  return impl_->tiers.at(static_cast<std::size_t>(level)).patches.at(static_cast<std::size_t>(patch)).shape;
-}
-bool CompositeMultigrid::covered(int level, int patch, std::size_t q) const {
-  return impl_->tiers.at(static_cast<std::size_t>(level)).covered.at(static_cast<std::size_t>(patch)).at(q) != 0;
+Multigrid& CompositeMultigrid::base() { return impl_->base; }
+int CompositeMultigrid::parts() const { return static_cast<int>(impl_->part_of.size()); }
+const PartGeometry& CompositeMultigrid::part(int i) const { return impl_->geometry.at(static_cast<std::size_t>(i)); }
+bool CompositeMultigrid::covered(int i, std::size_t q) const {
+  const auto [t, p] = impl_->part_of.at(static_cast<std::size_t>(i));
+  return impl_->tiers[static_cast<std::size_t>(t)].covered[static_cast<std::size_t>(p)].at(q) != 0;
 }
 CompositeField CompositeMultigrid::field(double value) const {
   CompositeField f;
-  f.base.assign(impl_->tiers[0].patches[0].cells(), value);
-  for (std::size_t t = 1; t < impl_->tiers.size(); ++t) {
-    f.patch.emplace_back();
-    for (const auto& P : impl_->tiers[t].patches) f.patch.back().emplace_back(P.cells(), value);
-  }
+  for (const auto& g : impl_->geometry) f.part.emplace_back(g.shape.cells(), value);
   return f;
+}
+
+void CompositeMultigrid::fill_covered(CompositeField& f) const {
+  const Impl& m = *impl_;
+  for (int t = static_cast<int>(m.tiers.size()) - 1; t >= 1; --t) {
+    const auto& T = m.tiers[static_cast<std::size_t>(t)];
+    for (std::size_t p = 0; p < T.patches.size(); ++p) {
+      const Level& P = T.patches[p];
+      const std::vector<double>& fine = f.part.at(m.part_index(t, p));
+      std::vector<double>& coarse = f.part.at(m.part_index(t - 1, static_cast<std::size_t>(T.parent[p])));
+      std::vector<double> sum(coarse.size(), 0.0), vol(coarse.size(), 0.0);
+      for (int k = 0; k < P.shape.n[2]; ++k)
+        for (int j = 0; j < P.shape.n[1]; ++j)
+          for (int i = 0; i < P.shape.n[0]; ++i) {
+            const std::size_t q = P.cell(i, j, k), qc = m.coarse_cell(t, p, i, j, k);
+            sum[qc] += P.volume[q] * fine[q];
+            vol[qc] += P.volume[q];
+          }
+      for (std::size_t qc = 0; qc < coarse.size(); ++qc)
+        if (vol[qc] > 0) coarse[qc] = sum[qc] / vol[qc];
+    }
+  }
+}
+
+CompositeField CompositeMultigrid::with_ghosts(const ScalarEquation& boundary, const CompositeField& u) {
+  Impl& m = *impl_;
+  if (!m.refined()) return {{m.base.with_ghosts(boundary, u.part.at(0))}};
+  const auto par = Impl::parity_factors(boundary);
+  m.load(u, false);
+  m.restrict_solution(boundary, par);
+  CompositeField out;
+  for (int t = 0; t < static_cast<int>(m.tiers.size()); ++t) m.fill(t, boundary, par);
+  for (const auto& [t, p] : m.part_of) out.part.push_back(m.tiers[static_cast<std::size_t>(t)].patches[static_cast<std::size_t>(p)].u);
+  return out;
 }
 
 SolveStats CompositeMultigrid::solve(const CompositeEquation& eq, CompositeField& u, const SolveSettings& s) {
   Impl& m = *impl_;
+  if (!m.refined()) {
+    u.part.resize(1);
+    return m.base.solve(m.base_equation(eq), u.part[0], s);
+  }
   m.set_equation(eq);
   const ScalarEquation& bc = eq.boundary;
   const auto par = Impl::parity_factors(bc);
@@ -778,7 +842,7 @@ SolveStats CompositeMultigrid::solve(const CompositeEquation& eq, CompositeField
     m.base_u.assign(m.tiers[0].patches[0].cells(), eq.nonlinear() ? 1.0 : 0.0);
     m.base.solve(m.base_eq, m.base_u, bs);
     CompositeField start;
-    start.base = m.base_u;
+    start.part.push_back(m.base_u);
     m.load(start, eq.nonlinear());
     m.base.prepare(m.base_eq);
     for (int t = 1; t < static_cast<int>(m.tiers.size()); ++t) {
@@ -821,6 +885,7 @@ SolveStats CompositeMultigrid::solve(const CompositeEquation& eq, CompositeField
 
 double CompositeMultigrid::residual_norm(const CompositeEquation& eq, const CompositeField& u) {
   Impl& m = *impl_;
+  if (!m.refined()) return m.base.residual_norm(m.base_equation(eq), u.part.at(0));
   m.set_equation(eq);
   m.load(u, eq.nonlinear());
   const auto par = Impl::parity_factors(eq.boundary);

@@ -2,22 +2,20 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace remnant::xcfc {
 
-GridShape shape_of_grid(const Context& ctx) {
+CompositeLayout layout_of_grid(const Context& ctx) {
   GridDriver& grid = ctx.grid();
-  const auto blocks = grid.all_blocks();
-  int level = blocks.empty() ? 0 : blocks.front().level;
-  for (const auto& b : blocks)
-    if (b.level != level)
-      throw RunError("XCFC solves on a uniform grid; this grid has blocks on levels " + std::to_string(level) + " and " +
-                     std::to_string(b.level) + ". Run with Grid::max_level = 0 (composite AMR solves are not implemented)");
-  GridShape s;
+  CompositeLayout lay;
+  GridShape& s = lay.base;
   s.coordinates = grid.coordinates();
   s.dimension = grid.dimension();
   const auto& n = ctx.param<std::vector<std::int64_t>>("Grid", "ncells");
+  const auto& nb = ctx.param<std::vector<std::int64_t>>("Grid", "block_size");
   const auto& lo = ctx.param<std::vector<double>>("Grid", "xmin");
   const auto& hi = ctx.param<std::vector<double>>("Grid", "xmax");
   const auto& bl = ctx.param<std::vector<std::string>>("Grid", "boundary_lower");
@@ -30,39 +28,86 @@ GridShape shape_of_grid(const Context& ctx) {
     throw RunError("XCFC: Grid boundary '" + k + "' is not supported by the elliptic solver (periodic domains have no far field)");
   };
   for (int d = 0; d < 3; ++d) {
+    const auto u = static_cast<std::size_t>(d);
     if (d < s.dimension) {
-      s.n[d] = static_cast<int>(n[static_cast<std::size_t>(d)]) << level;
-      s.lo[d] = lo[static_cast<std::size_t>(d)];
-      s.dx[d] = (hi[static_cast<std::size_t>(d)] - lo[static_cast<std::size_t>(d)]) / s.n[d];
-      s.boundary[d] = {kind(bl[static_cast<std::size_t>(d)]), kind(bu[static_cast<std::size_t>(d)])};
+      s.n[d] = static_cast<int>(n[u]);
+      s.lo[d] = lo[u];
+      s.dx[d] = (hi[u] - lo[u]) / s.n[d];
+      s.boundary[d] = {kind(bl[u]), kind(bu[u])};
+      lay.patch_cells[d] = static_cast<int>(nb[u]);
     } else {
       s.n[d] = 1;
       s.boundary[d] = {Boundary::outer, Boundary::outer};
+      lay.patch_cells[d] = 1;
     }
   }
-  return s;
+  // Level l >= 1: every leaf of level l and every ancestor on level l of a finer leaf.
+  std::vector<std::set<std::array<std::int64_t, 3>>> levels;
+  for (const BlockKey& k : grid.all_blocks()) {
+    std::array<std::int64_t, 3> idx = k.index;
+    for (int l = k.level; l >= 1; --l) {
+      if (static_cast<int>(levels.size()) < l) levels.resize(static_cast<std::size_t>(l));
+      levels[static_cast<std::size_t>(l - 1)].insert(idx);
+      for (int d = 0; d < s.dimension; ++d) idx[static_cast<std::size_t>(d)] /= 2;
+    }
+  }
+  for (const auto& set : levels) {
+    lay.patches.emplace_back();
+    for (const auto& b : set)
+      lay.patches.back().push_back({static_cast<int>(b[0] * lay.patch_cells[0]), static_cast<int>(b[1] * lay.patch_cells[1]),
+                                    static_cast<int>(b[2] * lay.patch_cells[2])});
+  }
+  return lay;
 }
 
-GridBridge::GridBridge(Context& ctx, const GridShape& shape) : ctx_(ctx), shape_(shape) {}
-
-std::size_t GridBridge::global_index(const Block& b, int i, int j, int k) const {
-  const std::int64_t I = b.index[0] * b.n[0] + i, J = b.index[1] * b.n[1] + j, K = b.index[2] * b.n[2] + k;
-  return static_cast<std::size_t>(I + shape_.n[0] * (J + static_cast<std::int64_t>(shape_.n[1]) * K));
+GridBridge::GridBridge(Context& ctx, const CompositeMultigrid& mg) : ctx_(ctx), mg_(mg) {
+  const CompositeLayout& lay = mg.layout();
+  int part = 1;
+  for (const auto& level : lay.patches) {
+    part_of_block_.emplace_back();
+    for (const auto& c : level) {
+      std::array<std::int64_t, 3> b{};
+      for (int d = 0; d < 3; ++d) b[static_cast<std::size_t>(d)] = c[static_cast<std::size_t>(d)] / lay.patch_cells[static_cast<std::size_t>(d)];
+      part_of_block_.back()[b] = part++;
+    }
+  }
 }
 
-void GridBridge::allreduce(std::vector<double>& a) const {
-  if (ctx_.nranks() > 1)
-    MPI_Allreduce(MPI_IN_PLACE, a.data(), static_cast<int>(a.size()), MPI_DOUBLE, MPI_SUM, ctx_.grid().comm());
+GridBridge::Place GridBridge::place(const Block& b) const {
+  if (b.level == 0) {
+    const GridShape& s = mg_.base_shape();
+    return {0, {b.index[0] * b.n[0], b.index[1] * b.n[1], b.index[2] * b.n[2]}, s.n[0], s.n[1]};
+  }
+  const auto& map = part_of_block_.at(static_cast<std::size_t>(b.level - 1));
+  const auto it = map.find(b.index);
+  if (it == map.end()) throw RunError("XCFC: internal error: a block of level " + std::to_string(b.level) + " is not in the composite layout");
+  return {it->second, {0, 0, 0}, b.n[0], b.n[1]};
 }
 
-std::vector<double> GridBridge::gather(int group, int comp) const {
+void GridBridge::complete(CompositeField& f) const {
+  if (ctx_.nranks() > 1) {
+    std::vector<double> flat;
+    for (const auto& p : f.part) flat.insert(flat.end(), p.begin(), p.end());
+    MPI_Allreduce(MPI_IN_PLACE, flat.data(), static_cast<int>(flat.size()), MPI_DOUBLE, MPI_SUM, ctx_.grid().comm());
+    std::size_t at = 0;
+    for (auto& p : f.part) {
+      std::copy(flat.begin() + static_cast<std::ptrdiff_t>(at), flat.begin() + static_cast<std::ptrdiff_t>(at + p.size()), p.begin());
+      at += p.size();
+    }
+  }
+  mg_.fill_covered(f);
+}
+
+CompositeField GridBridge::gather(int group, int comp) const {
   return gather_cells([&](Block& b, int i, int j, int k) { return b.field(group, comp)(i, j, k); });
 }
 
-void GridBridge::scatter(const std::vector<double>& a, int group, int comp) const {
+void GridBridge::scatter(const CompositeField& a, int group, int comp) const {
   for (Block* b : ctx_.grid().local_blocks()) {
+    const Place pl = place(*b);
+    const std::vector<double>& part = a.part.at(static_cast<std::size_t>(pl.part));
     Field f = b->field(group, comp);
-    for_interior(*b, [&](int i, int j, int k) { f(i, j, k) = a[global_index(*b, i, j, k)]; });
+    for_interior(*b, [&](int i, int j, int k) { f(i, j, k) = part[pl.index(i, j, k)]; });
   }
 }
 

@@ -1,41 +1,57 @@
 #pragma once
-// Between the Grid's block forest and the solver's structured grid. The solver works on the whole
-// uniform level on every rank: a gather is one MPI_Allreduce(SUM) of arrays in which each rank has
-// filled its own cells (exact: every cell is written by one rank, the rest are zeros), so results
-// are bit-identical for any number of ranks. A grid with blocks on several levels is refused.
+// Between the Grid's block forest and the solver's composite grid. The base level (level 0 of the
+// forest, as one array) and, with refinement, one patch per block of each finer level that is a
+// leaf or an ancestor of leaves (CompositeLayout). Every rank holds the whole composite field: a
+// gather is one MPI_Allreduce(SUM) of arrays in which each rank has filled its own leaf cells
+// (exact: every leaf cell is written by one rank, the rest are zeros), so results are bit-identical
+// for any number of ranks; covered cells then take the volume-weighted mean of their children.
+#include <map>
 #include <vector>
 
-#include "XCFC/structured_grid.hpp"
+#include "XCFC/composite_multigrid.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::xcfc {
 
-// The structured grid of the Grid's (single) level; throws RunError for a refined grid.
-GridShape shape_of_grid(const Context& ctx);
+// The composite layout of the Grid's forest; throws RunError for boundaries the solver lacks.
+CompositeLayout layout_of_grid(const Context& ctx);
 
 class GridBridge {
  public:
-  GridBridge(Context& ctx, const GridShape& shape);
-  // Global cell index of interior cell (i, j, k) of a block.
-  std::size_t global_index(const Block& b, int i, int j, int k) const;
-  // Gathers the interior of component `comp` of `group` (times nothing) into a global array.
-  std::vector<double> gather(int group, int comp) const;
+  GridBridge(Context& ctx, const CompositeMultigrid& mg);
+  // Gathers the interior of component `comp` of `group`.
+  CompositeField gather(int group, int comp) const;
   // Gathers a value computed per cell on the owning rank.
   template <class F>
-  std::vector<double> gather_cells(F&& value) const {
-    std::vector<double> out(shape_.cells(), 0.0);
-    for (Block* b : ctx_.grid().local_blocks())
-      for_interior(*b, [&](int i, int j, int k) { out[global_index(*b, i, j, k)] = value(*b, i, j, k); });
-    allreduce(out);
+  CompositeField gather_cells(F&& value) const {
+    CompositeField out = mg_.field();
+    for (Block* b : ctx_.grid().local_blocks()) {
+      const Place pl = place(*b);
+      std::vector<double>& part = out.part[static_cast<std::size_t>(pl.part)];
+      for_interior(*b, [&](int i, int j, int k) { part[pl.index(i, j, k)] = value(*b, i, j, k); });
+    }
+    complete(out);
     return out;
   }
-  // Writes a global array into the interior of the local blocks.
-  void scatter(const std::vector<double>& a, int group, int comp) const;
+  // Writes the leaf values of a composite field into the interior of the local blocks.
+  void scatter(const CompositeField& a, int group, int comp) const;
 
  private:
-  void allreduce(std::vector<double>& a) const;
+  // Where a block's interior lies in the composite field: a part and the offset and row lengths of
+  // the block's cell (0, 0, 0) there.
+  struct Place {
+    int part;
+    std::array<std::int64_t, 3> offset;
+    std::int64_t n0, n1;
+    std::size_t index(int i, int j, int k) const {
+      return static_cast<std::size_t>((offset[0] + i) + n0 * ((offset[1] + j) + n1 * (offset[2] + k)));
+    }
+  };
+  Place place(const Block& b) const;
+  void complete(CompositeField& f) const;  // allreduce, then covered cells from their children
   Context& ctx_;
-  GridShape shape_;
+  const CompositeMultigrid& mg_;
+  std::vector<std::map<std::array<std::int64_t, 3>, int>> part_of_block_;  // per level >= 1
 };
 
 }  // namespace remnant::xcfc

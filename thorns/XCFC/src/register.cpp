@@ -27,7 +27,7 @@ namespace {
 // (Spacetime::metric, XCFC::potentials: the warm starts) or in the persistent counters.
 struct Runtime {
   std::unique_ptr<XcfcSolver> solver;
-  GridShape shape;
+  CompositeLayout layout;
   std::int64_t steps_since_solve = 0, solves = 0;
   // Times of the last two solves and how many of XCFC::metric_history's two slots are filled.
   double t_last = 0, t_before = 0;
@@ -40,12 +40,20 @@ Runtime& runtime() {
   return r;
 }
 
+bool same_layout(const CompositeLayout& a, const CompositeLayout& b) {
+  return a.base.n == b.base.n && a.base.coordinates == b.base.coordinates && a.base.dimension == b.base.dimension &&
+         a.base.lo == b.base.lo && a.base.dx == b.base.dx && a.patch_cells == b.patch_cells && a.patches == b.patches;
+}
+
+// The solver of the current mesh, rebuilt when the forest has changed (a regrid).
 XcfcSolver& solver(Context& ctx) {
   Runtime& rt = runtime();
-  const GridShape s = shape_of_grid(ctx);
-  if (!rt.solver || s.n != rt.shape.n || s.coordinates != rt.shape.coordinates || s.dimension != rt.shape.dimension) {
-    rt.shape = s;
-    rt.solver = std::make_unique<XcfcSolver>(s, ctx.grid().comm());  // the cycles' work is split between its ranks
+  CompositeLayout lay = layout_of_grid(ctx);
+  if (!rt.solver || !same_layout(lay, rt.layout)) {
+    rt.layout = lay;
+    // The base level's cycles are split between the ranks; patches are computed by every rank.
+    rt.solver = lay.patches.empty() ? std::make_unique<XcfcSolver>(lay.base, ctx.grid().comm())
+                                    : std::make_unique<XcfcSolver>(lay, ctx.grid().comm());
   }
   return *rt.solver;
 }
@@ -61,7 +69,7 @@ SolveSettings settings(const Context& ctx, bool initial) {
 
 // Warm starts and the groups of one solve.
 struct Sources {
-  std::vector<double> E;
+  CompositeField E;
   VectorField S;
 };
 
@@ -169,13 +177,13 @@ struct Solve {
   XcfcStats stats;
 
   Solve(Context& ctx, bool initial)
-      : sv(solver(ctx)), br(ctx, sv.shape()), g(MatterGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
+      : sv(solver(ctx)), br(ctx, sv.multigrid()), g(MatterGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
         set(settings(ctx, initial)) {
     load_warm_start(br, g, potentials, st);
   }
 
   void finish(Context& ctx, const Sources& src, const char* reason) {
-    const std::vector<double> S =
+    const CompositeField S =
         br.gather_cells([&](Block& b, int i, int j, int k) { return densitised_stress_trace(b, g, i, j, k); });
     sv.solve_lapse_and_shift(src.E, src.S, S, st, stats, set);
     store_lapse_shift(br, g, potentials, st);
@@ -206,11 +214,12 @@ void solve_from_primitives(Context& ctx) {
   for (int it = 0; it < max_iter; ++it) {
     conserved_from_primitives(ctx, s.g);
     const Sources src = gather_sources(s.br, s.g);
-    const std::vector<double> old = s.st.psi;
+    const CompositeField old = s.st.psi;
     s.sv.solve_conformal_factor(src.E, src.S, s.st, s.stats, s.set);
     s.br.scatter(s.st.psi, s.g.metric, 0);
     change = 0;
-    for (std::size_t q = 0; q < old.size(); ++q) change = std::max(change, std::abs(s.st.psi[q] - old[q]));
+    for (std::size_t n = 0; n < old.part.size(); ++n)
+      for (std::size_t q = 0; q < old.part[n].size(); ++q) change = std::max(change, std::abs(s.st.psi.part[n][q] - old.part[n][q]));
     if (change <= s.set.tolerance) break;
   }
   char m[200];
@@ -231,7 +240,7 @@ void initial(Context& ctx) {
 // stored between solves, and its contribution is second order in the velocities).
 double psi_residual(Context& ctx) {
   XcfcSolver& sv = solver(ctx);
-  const GridBridge br(ctx, sv.shape());
+  const GridBridge br(ctx, sv.multigrid());
   const MatterGroups g = MatterGroups::of(ctx);
   XcfcState st;
   st.psi = br.gather(g.metric, 0);

@@ -53,30 +53,42 @@ ScalarEquation cartesian_component_equation(const GridShape& s, int a) {
 ScalarEquation chi_equation() { return ScalarEquation{}; }
 
 namespace {
+
+// Interior cells of a part: f(q, p, i, j, k) with q the interior and p the ghosted index.
 template <class F>
-void for_all_cells(const GridShape& s, int ghost, F&& f) {
-  std::array<int, 3> g{};
-  for (int d = 0; d < 3; ++d) g[d] = s.used(d) ? ghost : 0;
-  for (int k = -g[2]; k < s.n[2] + g[2]; ++k)
-    for (int j = -g[1]; j < s.n[1] + g[1]; ++j)
-      for (int i = -g[0]; i < s.n[0] + g[0]; ++i) f(i, j, k);
+void for_part_cells(const PartGeometry& g, F&& f) {
+  const GridShape& s = g.shape;
+  std::size_t q = 0;
+  for (int k = 0; k < s.n[2]; ++k)
+    for (int j = 0; j < s.n[1]; ++j)
+      for (int i = 0; i < s.n[0]; ++i) f(q++, static_cast<std::size_t>(g.at(i, j, k)), i, j, k);
+}
+
+VectorField sized(const CompositeMultigrid& mg, bool ghosted) {
+  VectorField out;
+  for (auto& c : out)
+    for (int i = 0; i < mg.parts(); ++i) {
+      const PartGeometry& g = mg.part(i);
+      c.part.emplace_back(ghosted ? g.frames().f.size() : g.shape.cells(), 0.0);
+    }
+  return out;
 }
 
 // The transformations with the precomputed frames (interior cells; v^i = J[A][i] V^A / f_ii).
-VectorField to_cartesian(const Multigrid& mg, const VectorField& up) {
-  const GridShape& s = mg.shape();
-  const CellFrames& fr = mg.frames();
+VectorField to_cartesian(const CompositeMultigrid& mg, const VectorField& up) {
   bool active[3];
-  for (int a = 0; a < 3; ++a) active[a] = cartesian_component_active(s, a);
-  VectorField out;
-  for (auto& c : out) c.assign(s.cells(), 0.0);
-  std::size_t q = 0;
-  for_all_cells(s, 0, [&](int i, int j, int k) {
-    const Matrix3& J = fr.J[static_cast<std::size_t>(mg.ghosted_index(i, j, k))];
-    for (int a = 0; a < 3; ++a)
-      if (active[a]) out[a][q] = J[a][0] * up[0][q] + J[a][1] * up[1][q] + J[a][2] * up[2][q];
-    ++q;
-  });
+  for (int a = 0; a < 3; ++a) active[a] = cartesian_component_active(mg.base_shape(), a);
+  VectorField out = sized(mg, false);
+  for (int n = 0; n < mg.parts(); ++n) {
+    const PartGeometry& g = mg.part(n);
+    const CellFrames& fr = g.frames();
+    const auto &u0 = up[0].part[n], &u1 = up[1].part[n], &u2 = up[2].part[n];
+    for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
+      const Matrix3& J = fr.J[p];
+      for (int a = 0; a < 3; ++a)
+        if (active[a]) out[a].part[n][q] = J[a][0] * u0[q] + J[a][1] * u1[q] + J[a][2] * u2[q];
+    });
+  }
   return out;
 }
 Point3 from_cartesian(const CellFrames& fr, std::size_t p, double V0, double V1, double V2) {
@@ -86,125 +98,134 @@ Point3 from_cartesian(const CellFrames& fr, std::size_t p, double V0, double V1,
   for (int c = 0; c < 3; ++c) v[c] = (J[0][c] * V0 + J[1][c] * V1 + J[2][c] * V2) / f[c];
   return v;
 }
-VectorField to_coordinate(const Multigrid& mg, const VectorField& cart) {
-  const GridShape& s = mg.shape();
-  const CellFrames& fr = mg.frames();
-  VectorField out;
-  for (auto& c : out) c.assign(s.cells(), 0.0);
-  std::size_t q = 0;
-  for_all_cells(s, 0, [&](int i, int j, int k) {
-    const Point3 v = from_cartesian(fr, static_cast<std::size_t>(mg.ghosted_index(i, j, k)), cart[0][q], cart[1][q], cart[2][q]);
-    for (int c = 0; c < 3; ++c) out[c][q] = v[c];
-    ++q;
-  });
+VectorField to_coordinate(const CompositeMultigrid& mg, const VectorField& cart) {
+  VectorField out = sized(mg, false);
+  for (int n = 0; n < mg.parts(); ++n) {
+    const PartGeometry& g = mg.part(n);
+    const CellFrames& fr = g.frames();
+    for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
+      const Point3 v = from_cartesian(fr, p, cart[0].part[n][q], cart[1].part[n][q], cart[2].part[n][q]);
+      for (int c = 0; c < 3; ++c) out[c].part[n][q] = v[c];
+    });
+  }
   return out;
 }
 }  // namespace
 
-VectorField to_cartesian_components(const GridShape& s, const VectorField& up) {
-  VectorField out;
-  for (auto& c : out) c.assign(s.cells(), 0.0);
-  std::size_t q = 0;
-  for_all_cells(s, 0, [&](int i, int j, int k) {
-    const Point3 V = coords::vector_to_cartesian(s.coordinates, s.point(i, j, k), {up[0][q], up[1][q], up[2][q]});
-    for (int a = 0; a < 3; ++a) out[a][q] = cartesian_component_active(s, a) ? V[a] : 0.0;
-    ++q;
-  });
+VectorField to_cartesian_components(const CompositeMultigrid& mg, const VectorField& up) {
+  VectorField out = sized(mg, false);
+  for (int n = 0; n < mg.parts(); ++n) {
+    const GridShape& s = mg.part(n).shape;
+    for_part_cells(mg.part(n), [&](std::size_t q, std::size_t, int i, int j, int k) {
+      const Point3 V = coords::vector_to_cartesian(s.coordinates, s.point(i, j, k), {up[0].part[n][q], up[1].part[n][q], up[2].part[n][q]});
+      for (int a = 0; a < 3; ++a) out[a].part[n][q] = cartesian_component_active(mg.base_shape(), a) ? V[a] : 0.0;
+    });
+  }
   return out;
 }
 
-VectorField to_coordinate_components(const GridShape& s, const VectorField& cart) {
-  VectorField out;
-  for (auto& c : out) c.assign(s.cells(), 0.0);
-  std::size_t q = 0;
-  for_all_cells(s, 0, [&](int i, int j, int k) {
-    const Point3 v = coords::vector_from_cartesian(s.coordinates, s.point(i, j, k), {cart[0][q], cart[1][q], cart[2][q]});
-    for (int c = 0; c < 3; ++c) out[c][q] = v[c];
-    ++q;
-  });
+VectorField to_coordinate_components(const CompositeMultigrid& mg, const VectorField& cart) {
+  VectorField out = sized(mg, false);
+  for (int n = 0; n < mg.parts(); ++n) {
+    const GridShape& s = mg.part(n).shape;
+    for_part_cells(mg.part(n), [&](std::size_t q, std::size_t, int i, int j, int k) {
+      const Point3 v = coords::vector_from_cartesian(s.coordinates, s.point(i, j, k), {cart[0].part[n][q], cart[1].part[n][q], cart[2].part[n][q]});
+      for (int c = 0; c < 3; ++c) out[c].part[n][q] = v[c];
+    });
+  }
   return out;
 }
 
-VectorField ghosted_coordinate_components(const Multigrid& mg, const VectorField& up) {
-  const GridShape& s = mg.shape();
+VectorField ghosted_coordinate_components(CompositeMultigrid& mg, const VectorField& up) {
+  const GridShape& s = mg.base_shape();
   const VectorField cart = to_cartesian(mg, up);
   VectorField gc;
   for (int a = 0; a < 3; ++a) gc[a] = mg.with_ghosts(cartesian_component_equation(s, a), cart[a]);
-  VectorField out;
-  for (auto& c : out) c.assign(gc[0].size(), 0.0);
-  const CellFrames& fr = mg.frames();
-  for_all_cells(s, 1, [&](int i, int j, int k) {
-    const std::size_t p = static_cast<std::size_t>(mg.ghosted_index(i, j, k));
-    const Point3 v = from_cartesian(fr, p, gc[0][p], gc[1][p], gc[2][p]);
-    for (int c = 0; c < 3; ++c) out[c][p] = v[c];
-  });
+  VectorField out = sized(mg, true);
+  for (int n = 0; n < mg.parts(); ++n) {
+    const PartGeometry& g = mg.part(n);
+    const GridShape& ps = g.shape;
+    const CellFrames& fr = g.frames();
+    for (int k = -g.ghosts[2]; k < ps.n[2] + g.ghosts[2]; ++k)
+      for (int j = -g.ghosts[1]; j < ps.n[1] + g.ghosts[1]; ++j)
+        for (int i = -g.ghosts[0]; i < ps.n[0] + g.ghosts[0]; ++i) {
+          const std::size_t p = static_cast<std::size_t>(g.at(i, j, k));
+          const Point3 v = from_cartesian(fr, p, gc[0].part[n][p], gc[1].part[n][p], gc[2].part[n][p]);
+          for (int c = 0; c < 3; ++c) out[c].part[n][p] = v[c];
+        }
+  }
   return out;
 }
 
-std::vector<double> divergence(const Multigrid& mg, const VectorField& up) {
-  const GridShape& s = mg.shape();
+CompositeField divergence(CompositeMultigrid& mg, const VectorField& up) {
   const VectorField g = ghosted_coordinate_components(mg, up);
-  const auto st = mg.ghosted_strides();
-  // The face factors over the cell integral per direction and index: separable, so 1D tables.
-  std::array<std::vector<double>, 3> lo_w, hi_w;
-  for (int d = 0; d < s.dimension; ++d) {
-    lo_w[d].resize(static_cast<std::size_t>(s.n[d]));
-    hi_w[d].resize(static_cast<std::size_t>(s.n[d]));
-    for (int i = 0; i < s.n[d]; ++i) {
-      const double a = s.face(d, i), b = s.face(d, i + 1);
-      const double w = coords::volume_factor_integral(s.coordinates, d, a, b);
-      lo_w[d][static_cast<std::size_t>(i)] = coords::volume_factor(s.coordinates, d, a) / w;
-      hi_w[d][static_cast<std::size_t>(i)] = coords::volume_factor(s.coordinates, d, b) / w;
-    }
-  }
-  std::vector<double> div(s.cells(), 0.0);
-  std::size_t q = 0;
-  for_all_cells(s, 0, [&](int i, int j, int k) {
-    const std::array<int, 3> ijk{i, j, k};
-    const std::size_t p = static_cast<std::size_t>(mg.ghosted_index(i, j, k));
-    double sum = 0;
+  CompositeField div = mg.field();
+  for (int n = 0; n < mg.parts(); ++n) {
+    const PartGeometry& pg = mg.part(n);
+    const GridShape& s = pg.shape;
+    const auto& st = pg.strides;
+    // The face factors over the cell integral per direction and index: separable, so 1D tables.
+    std::array<std::vector<double>, 3> lo_w, hi_w;
     for (int d = 0; d < s.dimension; ++d) {
-      const double hi = 0.5 * (g[d][p] + g[d][p + st[d]]), lo = 0.5 * (g[d][p] + g[d][p - st[d]]);
-      const auto m = static_cast<std::size_t>(ijk[d]);
-      sum += hi_w[d][m] * hi - lo_w[d][m] * lo;
+      lo_w[d].resize(static_cast<std::size_t>(s.n[d]));
+      hi_w[d].resize(static_cast<std::size_t>(s.n[d]));
+      for (int i = 0; i < s.n[d]; ++i) {
+        const double a = s.face(d, i), b = s.face(d, i + 1);
+        const double w = coords::volume_factor_integral(s.coordinates, d, a, b);
+        lo_w[d][static_cast<std::size_t>(i)] = coords::volume_factor(s.coordinates, d, a) / w;
+        hi_w[d][static_cast<std::size_t>(i)] = coords::volume_factor(s.coordinates, d, b) / w;
+      }
     }
-    div[q++] = sum;
-  });
+    for_part_cells(pg, [&](std::size_t q, std::size_t p, int i, int j, int k) {
+      const std::array<int, 3> ijk{i, j, k};
+      double sum = 0;
+      for (int d = 0; d < s.dimension; ++d) {
+        const auto& gd = g[d].part[n];
+        const double hi = 0.5 * (gd[p] + gd[p + st[d]]), lo = 0.5 * (gd[p] + gd[p - st[d]]);
+        const auto m = static_cast<std::size_t>(ijk[d]);
+        sum += hi_w[d][m] * hi - lo_w[d][m] * lo;
+      }
+      div.part[n][q] = sum;
+    });
+  }
   return div;
 }
 
-VectorSolveStats solve_vector_poisson(Multigrid& mg, const VectorField& source_up, VectorPotentials& warm,
+VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField& source_up, VectorPotentials& warm,
                                       VectorField& X_up, const SolveSettings& settings) {
-  const GridShape& s = mg.shape();
+  const GridShape& s = mg.base_shape();
   VectorSolveStats stats;
   const VectorField src = to_cartesian(mg, source_up);
+  const CompositeField zero = mg.field();
   for (int a = 0; a < 3; ++a) {
-    if (warm.B[a].size() != s.cells()) warm.B[a].assign(s.cells(), 0.0);
+    if (warm.B[a].part.size() != zero.part.size()) warm.B[a] = zero;
     if (!cartesian_component_active(s, a)) {
-      std::fill(warm.B[a].begin(), warm.B[a].end(), 0.0);
+      warm.B[a] = zero;
       stats.component[a].converged = true;
       continue;
     }
-    ScalarEquation eq = cartesian_component_equation(s, a);
+    CompositeEquation eq;
+    eq.boundary = cartesian_component_equation(s, a);
     eq.s0 = src[a];
     stats.component[a] = mg.solve(eq, warm.B[a], settings);
   }
   const VectorField B_up = to_coordinate(mg, warm.B);
-  ScalarEquation chi = chi_equation();
+  CompositeEquation chi;
+  chi.boundary = chi_equation();
   chi.s0 = divergence(mg, B_up);
   stats.chi = mg.solve(chi, warm.chi, settings);
   // X^i = B^i - f^ii d_i chi / 4 (centred differences).
-  const std::vector<double> gchi = mg.with_ghosts(chi, warm.chi);
-  const auto st = mg.ghosted_strides();
+  const CompositeField gchi = mg.with_ghosts(chi.boundary, warm.chi);
   X_up = B_up;
-  std::size_t q = 0;
-  for_all_cells(s, 0, [&](int i, int j, int k) {
-    const std::size_t p = static_cast<std::size_t>(mg.ghosted_index(i, j, k));
-    const Point3& f = mg.frames().f[p];
-    for (int d = 0; d < s.dimension; ++d)
-      X_up[d][q] -= 0.25 * (gchi[p + st[d]] - gchi[p - st[d]]) / (2 * s.dx[d] * f[d]);
-    ++q;
-  });
+  for (int n = 0; n < mg.parts(); ++n) {
+    const PartGeometry& g = mg.part(n);
+    const auto& st = g.strides;
+    const auto& gc = gchi.part[n];
+    for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
+      const Point3& f = g.frames().f[p];
+      for (int d = 0; d < s.dimension; ++d) X_up[d].part[n][q] -= 0.25 * (gc[p + st[d]] - gc[p - st[d]]) / (2 * g.shape.dx[d] * f[d]);
+    });
+  }
   return stats;
 }
 

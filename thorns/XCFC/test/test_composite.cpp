@@ -11,72 +11,13 @@
 
 #include "XCFC/composite_multigrid.hpp"
 #include "manufactured.hpp"
+#include "refined_layouts.hpp"
 
 namespace {
 
 using namespace remnant;
 using namespace remnant::xcfc;
 using namespace remnant::xcfc::test;
-using Box = std::array<std::array<double, 2>, 3>;
-
-// Level l + 1 patches: the children of every level-l block that meets the box and whose
-// neighbours (corners included) all belong to level l, so the layout is 2:1 balanced.
-CompositeLayout nested_layout(const GridShape& base, std::array<int, 3> patch_cells, const std::vector<Box>& boxes) {
-  CompositeLayout lay;
-  lay.base = base;
-  lay.patch_cells = patch_cells;
-  for (int d = base.dimension; d < 3; ++d) lay.patch_cells[d] = 1;
-  // Level-l blocks as a set of block indices; level 0: all.
-  std::vector<std::array<int, 3>> blocks;
-  std::array<int, 3> nblk{1, 1, 1};
-  for (int d = 0; d < base.dimension; ++d) nblk[d] = base.n[d] / lay.patch_cells[d];
-  for (int k = 0; k < nblk[2]; ++k)
-    for (int j = 0; j < nblk[1]; ++j)
-      for (int i = 0; i < nblk[0]; ++i) blocks.push_back({i, j, k});
-  for (std::size_t l = 0; l < boxes.size(); ++l) {
-    auto has = [&](std::array<int, 3> b) {
-      for (int d = 0; d < 3; ++d)
-        if (b[d] < 0 || b[d] >= nblk[d]) return true;  // outside the domain: no constraint
-      for (const auto& x : blocks)
-        if (x == b) return true;
-      return false;
-    };
-    const double scale = std::pow(0.5, static_cast<double>(l));
-    std::vector<std::array<int, 3>> next;
-    for (const auto& b : blocks) {
-      bool meets = true, balanced = true;
-      for (int d = 0; d < base.dimension; ++d) {
-        const double width = base.dx[d] * scale * lay.patch_cells[d];
-        const double a = base.lo[d] + b[d] * width, c = a + width;
-        meets &= c > boxes[l][d][0] && a < boxes[l][d][1];
-      }
-      for (int oz = -1; oz <= 1; ++oz)
-        for (int oy = -1; oy <= 1; ++oy)
-          for (int ox = -1; ox <= 1; ++ox) {
-            const std::array<int, 3> o{ox, oy, oz};
-            std::array<int, 3> nbk = b;
-            bool skip = false;
-            for (int d = 0; d < 3; ++d) {
-              if (d >= base.dimension && o[d] != 0) skip = true;
-              nbk[d] += o[d];
-            }
-            if (!skip) balanced &= has(nbk);
-          }
-      if (!meets || !balanced) continue;
-      for (int c = 0; c < (base.dimension > 2 ? 2 : 1); ++c)
-        for (int bb = 0; bb < (base.dimension > 1 ? 2 : 1); ++bb)
-          for (int a = 0; a < 2; ++a) next.push_back({2 * b[0] + a, 2 * b[1] + bb, 2 * b[2] + c});
-    }
-    if (next.empty()) break;
-    for (int d = 0; d < base.dimension; ++d) nblk[d] *= 2;
-    lay.patches.emplace_back();
-    for (const auto& b : next)
-      lay.patches.back().push_back({b[0] * lay.patch_cells[0], b[1] * lay.patch_cells[1], b[2] * lay.patch_cells[2]});
-    blocks = next;
-  }
-  return lay;
-}
-
 struct RefinedCase {
   std::string name;
   GridShape base;
@@ -120,20 +61,13 @@ struct Result {
   CompositeField u;
 };
 
-// Fills coefficient and exact arrays of every patch.
+// Calls f(part, cell, point) for every cell of every part.
 template <class F>
 void for_all(const CompositeMultigrid& mg, F&& f) {
-  const int L = mg.layout().finest();
-  for (int t = 0; t <= L; ++t) {
-    const int np = t == 0 ? 1 : static_cast<int>(mg.layout().patches[static_cast<std::size_t>(t - 1)].size());
-    for (int p = 0; p < np; ++p) {
-      const GridShape s = mg.patch_shape(t, p);
-      for_cells(s, [&](std::size_t q, int i, int j, int k) { f(t, p, q, s.point(i, j, k)); });
-    }
+  for (int i = 0; i < mg.parts(); ++i) {
+    const GridShape& s = mg.part(i).shape;
+    for_cells(s, [&](std::size_t q, int a, int b, int c) { f(i, q, s.point(a, b, c)); });
   }
-}
-std::vector<double>& at(CompositeField& f, int t, int p) {
-  return t == 0 ? f.base : f.patch[static_cast<std::size_t>(t - 1)][static_cast<std::size_t>(p)];
 }
 
 Result solve_composite(const CompositeLayout& lay, const Bump& bump_in, bool nonlinear, bool fmg) {
@@ -146,19 +80,19 @@ Result solve_composite(const CompositeLayout& lay, const Bump& bump_in, bool non
   if (nonlinear) eq.s1 = mg.field(), eq.s7 = mg.field();
   else eq.k = mg.field();
   CompositeField exact = mg.field();
-  for_all(mg, [&](int t, int p, std::size_t q, const Point3& x) {
+  for_all(mg, [&](int i, std::size_t q, const Point3& x) {
     const Point3 X = coords::to_cartesian(cs, x);
     const double u = bump(X), lap = bump.laplacian(X);
     const double w = std::exp(-0.3 * (X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
-    at(exact, t, p)[q] = u;
+    exact.part[i][q] = u;
     if (nonlinear) {
       const double s1 = -0.2 * w, s7 = -0.05 * w;
-      at(eq.s1, t, p)[q] = s1, at(eq.s7, t, p)[q] = s7;
-      at(eq.s0, t, p)[q] = lap - s1 / u - s7 / std::pow(u, 7);
+      eq.s1.part[i][q] = s1, eq.s7.part[i][q] = s7;
+      eq.s0.part[i][q] = lap - s1 / u - s7 / std::pow(u, 7);
     } else {
       const double k = 0.3 * w;
-      at(eq.k, t, p)[q] = k;
-      at(eq.s0, t, p)[q] = lap - k * u;
+      eq.k.part[i][q] = k;
+      eq.s0.part[i][q] = lap - k * u;
     }
   });
   eq.boundary.dirichlet = [&](const Point3& x) { return bump(coords::to_cartesian(cs, x)); };
@@ -169,10 +103,10 @@ Result solve_composite(const CompositeLayout& lay, const Bump& bump_in, bool non
   set.full_multigrid = fmg;
   if (const char* e = std::getenv("XCFC_SWEEPS")) set.pre_sweeps = set.post_sweeps = std::atoi(e);
   Result r{0, mg.solve(eq, u, set), lay.finest(), 0, {}};
-  for_all(mg, [&](int t, int p, std::size_t q, const Point3&) {
-    if (mg.covered(t, p, q)) return;
+  for_all(mg, [&](int i, std::size_t q, const Point3&) {
+    if (mg.covered(i, q)) return;
     ++r.leaf_cells;
-    r.error = std::max(r.error, std::abs(at(u, t, p)[q] - at(exact, t, p)[q]));
+    r.error = std::max(r.error, std::abs(u.part[i][q] - exact.part[i][q]));
   });
   r.u = u;
   return r;
@@ -241,7 +175,7 @@ TEST(XCFCComposite, FullyRefinedLevelEqualsUniformSolve) {
           for (int i = 0; i < lay.patch_cells[0]; ++i) {
             const std::size_t qp = static_cast<std::size_t>(i + lay.patch_cells[0] * (j + lay.patch_cells[1] * k));
             const std::size_t qu = static_cast<std::size_t>((corner[0] + i) + fine.n[0] * ((corner[1] + j) + fine.n[1] * (corner[2] + k)));
-            diff = std::max(diff, std::abs(comp.u.patch[0][p][qp] - u[qu]));
+            diff = std::max(diff, std::abs(comp.u.part[1 + p][qp] - u[qu]));
           }
       (void)ps;
     }

@@ -34,37 +34,61 @@ struct CompositeLayout {
   int finest() const { return static_cast<int>(patches.size()); }
 };
 
-// Interior arrays of a composite field: the base level, then [level - 1][patch].
+// Interior arrays of a composite field, one per part: part 0 is the base level, then the patches
+// of level 1, level 2, ... in the layout's order.
 struct CompositeField {
-  std::vector<double> base;
-  std::vector<std::vector<std::vector<double>>> patch;
+  std::vector<std::vector<double>> part;
+  bool empty() const { return part.empty(); }
 };
 
 // The equation's boundary data (parity, far_value, falloff, dirichlet, mode; its arrays unused) and
-// its coefficients as composite fields (an empty base array: zero, or absent for s1 and s7).
+// its coefficients as composite fields (no parts: zero, or absent for s1 and s7).
 struct CompositeEquation {
   ScalarEquation boundary;
   CompositeField k, s0, s1, s7;
-  bool nonlinear() const { return !s1.base.empty() || !s7.base.empty(); }
+  bool nonlinear() const { return !s1.empty() || !s7.empty(); }
+};
+
+// Geometry of one part in the ghosted layout (one ghost layer in used directions): per cell the
+// Jacobian dX^A/dx^i and the reference-metric diagonal at the evaluation point.
+struct PartGeometry {
+  GridShape shape;
+  int level = 0;
+  std::array<std::ptrdiff_t, 3> strides{1, 0, 0};
+  std::array<int, 3> ghosts{0, 0, 0};
+  const CellFrames& frames() const { return shared ? *shared : own; }
+  CellFrames own;                      // patches
+  const CellFrames* shared = nullptr;  // the base level: Multigrid's
+  std::ptrdiff_t at(int i, int j, int k) const {
+    return (i + ghosts[0]) + (j + ghosts[1]) * strides[1] + (k + ghosts[2]) * strides[2];
+  }
 };
 
 class CompositeMultigrid {
  public:
   // Throws std::invalid_argument for a layout that breaks the rules above.
   explicit CompositeMultigrid(const CompositeLayout& layout, MPI_Comm comm = MPI_COMM_SELF);
+  // A uniform grid: the base level only (every solve is Multigrid's, bit for bit).
+  explicit CompositeMultigrid(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF);
   ~CompositeMultigrid();
   CompositeMultigrid(CompositeMultigrid&&) noexcept;
   CompositeMultigrid& operator=(CompositeMultigrid&&) noexcept;
 
   const CompositeLayout& layout() const;
-  // The level-l whole-domain shape (l = 0: base) and the shape of one patch (its cells' geometry).
-  GridShape level_shape(int level) const;
-  GridShape patch_shape(int level, int patch) const;
-  // Whether interior cell q of a patch (level >= 1) or of the base (level 0, patch 0) is covered
-  // by a finer patch (not a leaf).
-  bool covered(int level, int patch, std::size_t q) const;
-  // A composite field of zeros (or `value`) with every array sized.
+  const GridShape& base_shape() const { return layout().base; }
+  Multigrid& base();
+  // The parts (base, then patches level by level) and their geometry.
+  int parts() const;
+  const PartGeometry& part(int i) const;
+  // Whether interior cell q of part i is covered by a finer patch (not a leaf).
+  bool covered(int i, std::size_t q) const;
+  // A composite field of `value` with every part sized.
   CompositeField field(double value = 0.0) const;
+  // Covered cells take the volume-weighted mean of their children (finest level first).
+  void fill_covered(CompositeField& f) const;
+  // Ghosted copies of the parts (PartGeometry::at) with the ghosts filled from the equation's
+  // boundary data, neighbours and coarser levels; covered cells first take the finer values.
+  CompositeField with_ghosts(const ScalarEquation& boundary, const CompositeField& u);
 
   // Solves in place (u: warm start, all levels). Convergence on max |residual| over the leaf cells
   // relative to the max of the source terms there; full_multigrid: the base problem (with the fine

@@ -9,16 +9,16 @@
 #include <array>
 #include <vector>
 
-#include "XCFC/multigrid.hpp"
+#include "XCFC/composite_multigrid.hpp"
 
 namespace remnant::xcfc {
 
-using VectorField = std::array<std::vector<double>, 3>;  // interior arrays per component
+using VectorField = std::array<CompositeField, 3>;  // interior arrays per component
 
 // The warm-start state of one vector solve: Cartesian B and the scalar chi.
 struct VectorPotentials {
   VectorField B;
-  std::vector<double> chi;
+  CompositeField chi;
 };
 
 struct VectorSolveStats {
@@ -35,16 +35,17 @@ ScalarEquation cartesian_component_equation(const GridShape& s, int a);
 ScalarEquation chi_equation();
 
 // Coordinate (contravariant) components <-> Cartesian components at the cells' evaluation points.
-VectorField to_cartesian_components(const GridShape& s, const VectorField& up);
-VectorField to_coordinate_components(const GridShape& s, const VectorField& cart);
-// Coordinate components with one ghost layer (boundary conditions of the Cartesian components).
-VectorField ghosted_coordinate_components(const Multigrid& mg, const VectorField& up);
+VectorField to_cartesian_components(const CompositeMultigrid& mg, const VectorField& up);
+VectorField to_coordinate_components(const CompositeMultigrid& mg, const VectorField& cart);
+// Coordinate components with one ghost layer (boundary conditions of the Cartesian components;
+// PartGeometry::at).
+VectorField ghosted_coordinate_components(CompositeMultigrid& mg, const VectorField& up);
 // The flat divergence of coordinate components, finite volumes with exact face integrals.
-std::vector<double> divergence(const Multigrid& mg, const VectorField& up);
+CompositeField divergence(CompositeMultigrid& mg, const VectorField& up);
 
 // Solves for X (coordinate components) given s (coordinate components); `warm` is used as the
-// initial guess and updated.
-VectorSolveStats solve_vector_poisson(Multigrid& mg, const VectorField& source_up, VectorPotentials& warm,
+// initial guess and updated. Equations are those of the base shape's boundaries.
+VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField& source_up, VectorPotentials& warm,
                                       VectorField& X_up, const SolveSettings& settings);
 
 }  // namespace remnant::xcfc

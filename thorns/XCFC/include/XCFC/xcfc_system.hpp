@@ -22,34 +22,37 @@ struct XcfcStats {
 };
 
 // Everything the solver keeps between solves (warm starts) and returns.
+// All fields are composite (one interior array per part of the CompositeMultigrid: the base level,
+// then the refined patches; a uniform grid has one part).
 struct XcfcState {
-  std::vector<double> psi, alpha_psi;
+  CompositeField psi, alpha_psi;
   VectorPotentials X_potentials, beta_potentials;
   VectorField X, beta;                       // coordinate components
-  std::array<std::vector<double>, 6> A;      // A^ij: 00 01 02 11 12 22
-  std::vector<double> A2;                    // A_ij A^ij
-  std::vector<double> alpha() const;
+  std::array<CompositeField, 6> A;           // A^ij: 00 01 02 11 12 22
+  CompositeField A2;                         // A_ij A^ij
+  CompositeField alpha() const;
 };
 
 class XcfcSolver {
  public:
-  explicit XcfcSolver(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF);
-  const GridShape& shape() const { return mg_.shape(); }
-  Multigrid& multigrid() { return mg_; }
+  explicit XcfcSolver(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF);          // uniform grid
+  explicit XcfcSolver(const CompositeLayout& layout, MPI_Comm comm = MPI_COMM_SELF);  // refined grid
+  const GridShape& shape() const { return mg_.base_shape(); }
+  CompositeMultigrid& multigrid() { return mg_; }
 
   // Steps 1-3. S_dn: covariant coordinate components of S~_j.
-  void solve_conformal_factor(const std::vector<double>& E, const VectorField& S_dn, XcfcState& st,
-                              XcfcStats& stats, const SolveSettings& settings);
+  void solve_conformal_factor(const CompositeField& E, const VectorField& S_dn, XcfcState& st, XcfcStats& stats,
+                              const SolveSettings& settings);
   // Steps 5-6 (psi from step 3 in st). S_trace: S~.
-  void solve_lapse_and_shift(const std::vector<double>& E, const VectorField& S_dn, const std::vector<double>& S_trace,
+  void solve_lapse_and_shift(const CompositeField& E, const VectorField& S_dn, const CompositeField& S_trace,
                              XcfcState& st, XcfcStats& stats, const SolveSettings& settings);
   // Residual of the psi equation for the current psi and these sources, relative to its sources
   // (the trigger of an early solve).
-  double conformal_factor_residual(const std::vector<double>& E, const XcfcState& st);
+  double conformal_factor_residual(const CompositeField& E, const XcfcState& st);
 
  private:
   void compute_A(XcfcState& st);
-  Multigrid mg_;
+  CompositeMultigrid mg_;
 };
 
 ScalarEquation conformal_factor_equation();
