@@ -37,9 +37,10 @@ std::int64_t trim_tsv_file(const std::string& path, std::int64_t last) {
   return dropped;
 }
 
-void start_or_resume_tsv_file(const Context& ctx, const std::string& path, const std::string& header) {
+void start_or_resume_tsv_file(const Context& ctx, const std::string& path, const std::string& header, RowTime rows) {
   if (ctx.recovered() && std::filesystem::exists(path)) {
-    const std::int64_t dropped = trim_tsv_file(path, ctx.recovered_iteration());
+    const std::int64_t last = ctx.recovered_iteration() - (rows == RowTime::before_step ? 1 : 0);
+    const std::int64_t dropped = trim_tsv_file(path, last);
     if (dropped > 0)
       ctx.info("dropped " + std::to_string(dropped) + " rows of " + path + " after the recovered iteration " +
                std::to_string(ctx.recovered_iteration()));

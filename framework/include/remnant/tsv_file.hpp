@@ -14,9 +14,15 @@ namespace remnant {
 // dropped too); returns the number of rows dropped.
 std::int64_t trim_tsv_file(const std::string& path, std::int64_t last);
 
+// When a thorn labels its rows: after the iteration's step (analysis, the state at the end of
+// iteration n: the checkpoint of n follows them) or before it (a prestep, labelled with the
+// iteration the step starts from: the row of n follows the checkpoint of n).
+enum class RowTime { after_step, before_step };
+
 // Before a thorn's first row of this run (rank 0): a fresh run creates the file with `header`
-// (lines starting with '#', ending in a newline); a recovered run trims it to the recovered
-// iteration (or creates it when missing).
-void start_or_resume_tsv_file(const Context& ctx, const std::string& path, const std::string& header);
+// (lines starting with '#', ending in a newline); a recovered run drops the rows written after the
+// recovered checkpoint (or creates the file when missing).
+void start_or_resume_tsv_file(const Context& ctx, const std::string& path, const std::string& header,
+                              RowTime rows = RowTime::after_step);
 
 }  // namespace remnant

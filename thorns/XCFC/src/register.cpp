@@ -114,7 +114,8 @@ void write_tsv(Context& ctx, const char* reason, const XcfcStats& s, double seco
   if (!runtime().tsv_started)
     start_or_resume_tsv_file(ctx, path,
                              "# iteration\ttime\treason\tX_cycles\tX_residual\tpsi_cycles\tpsi_residual\talphapsi_cycles\t"
-                             "alphapsi_residual\tbeta_cycles\tbeta_residual\twall_s\n");
+                             "alphapsi_residual\tbeta_cycles\tbeta_residual\twall_s\n",
+                             RowTime::before_step);  // a prestep row of iteration n follows n's checkpoint
   runtime().tsv_started = true;
   std::ofstream out(path, std::ios::app);
   auto rel = [](const SolveStats& x) { return x.scale > 0 ? x.residual / x.scale : x.residual; };

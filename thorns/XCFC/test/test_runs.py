@@ -13,6 +13,11 @@
                  conserved apart from atmosphere losses
   trigger        solve_every large, XCFC::residual_trigger on: early solves are made (reason
                  'residual'), fewer for a looser trigger, none when it is off
+  amr            composite (AMR) solves: a base of 320 cells refined once around the star follows a
+                 uniform 640-cell run (10x closer than a uniform 320-cell run does, in rho_c, alpha_c
+                 and psi_c over 300 steps); an adaptive run (Loehner on rho, two levels, regrid
+                 every 10) gives bit-identical analysis.tsv and xcfc.tsv on 1 and 2 ranks and after
+                 a 1 -> 2 rank restart
 """
 import os
 import sys
@@ -112,9 +117,38 @@ def mode_mass(r):
     assert drift[1e-13] < drift[1e-10] / 100, drift
 
 
+def mode_amr(r):
+    n = ["MoL::max_iterations=300"]
+    fine, _ = r.run("uniform640", 1, n + ["Grid::ncells=[640,1,1]", "Grid::block_size=[64,1,1]"])
+    coarse, _ = r.run("uniform320", 1, n + ["Grid::ncells=[320,1,1]", "Grid::block_size=[32,1,1]"])
+    amr, p = r.run("refined", 1, n + ["Grid::ncells=[320,1,1]", "Grid::block_size=[32,1,1]", "Grid::max_level=1",
+                                      "Grid::regions=[sphere]", "Grid::region_levels=[1]",
+                                      "Grid::region_bounds=[0,12,0,0,0,0]"])
+    F, C, A = (columns(os.path.join(d, "analysis.tsv")) for d in (fine, coarse, amr))
+    for col in ("rho_c", "alpha_c", "psi_c"):
+        ea = np.max(np.abs(A[col] / F[col] - 1))
+        ec = np.max(np.abs(C[col] / F[col] - 1))
+        print("%s: max relative difference from the uniform 640-cell run: refined 320+1 level %.3e, uniform 320 %.3e"
+              " (ratio %.1f)" % (col, ea, ec, ec / max(ea, 1e-300)))
+        assert ec > 10 * ea, "the refined run does not follow the fine uniform run (%s)" % col
+    adapt = ["Grid::ncells=[320,1,1]", "Grid::block_size=[16,1,1]", "Grid::max_level=2", "Grid::regrid_every=10",
+             "Grid::refine_variable=GRMHD::prim.rho", "Grid::refine_scale=log", "Grid::refine_threshold=0.1"]
+    one, p1 = r.run("adaptive_np1", 1, adapt + ["MoL::max_iterations=60"])
+    two, _ = r.run("adaptive_np2", 2, adapt + ["MoL::max_iterations=60"])
+    first, _ = r.run("adaptive_restart", 1, adapt + ["MoL::max_iterations=37", "IO::checkpoint_every=35"])
+    _, p3 = r.run("adaptive_restart", 2, adapt + ["MoL::max_iterations=60", "IO::recover=auto"])
+    assert "recovered from" in p3.stdout, p3.stdout[-3000:]
+    levels = [int(l.split(" levels")[0].split()[-1]) for l in p1.stdout.splitlines() if "Grid:" in l and " levels" in l]
+    assert levels and max(levels) == 3, "the adaptive run should refine to level 2: %s" % levels
+    for other, what in ((two, "2 ranks"), (first, "a 1 -> 2 rank restart")):
+        assert rows(os.path.join(one, "analysis.tsv")) == rows(os.path.join(other, "analysis.tsv")), "analysis.tsv differs on " + what
+        assert rows(os.path.join(one, "xcfc.tsv"), True) == rows(os.path.join(other, "xcfc.tsv"), True), "xcfc.tsv differs on " + what
+    print("adaptive run: analysis.tsv and xcfc.tsv bit-identical on 1 and 2 ranks and after a 1 -> 2 rank restart")
+
+
 def main():
     remnant_runs.main(make_runner, {"restart": mode_restart, "extrapolation": mode_extrapolation,
-                                    "trigger": mode_trigger, "mass": mode_mass})
+                                    "trigger": mode_trigger, "mass": mode_mass, "amr": mode_amr})
 
 
 if __name__ == "__main__":
