@@ -78,6 +78,16 @@ struct CompositeMultigrid::Impl {
       Level level;
     };
     std::array<std::vector<Run>, 2> runs;
+    // The split of the relaxation between the ranks: units (single patches for point smoothing,
+    // runs of direction d for lines) in contiguous chunks balanced by cells; after a pass the
+    // updated interiors are exchanged (MPI_Allgatherv), so every rank again holds the whole tier.
+    struct Split {
+      std::vector<std::vector<int>> units;  // patches of each unit
+      std::vector<std::size_t> first;       // first unit of each rank (nranks + 1 entries)
+      std::vector<int> counts, displs;      // doubles per rank
+    };
+    Split points;
+    std::array<Split, 2> lines;
   };
 
   CompositeLayout layout;
@@ -89,7 +99,17 @@ struct CompositeMultigrid::Impl {
   std::vector<std::pair<int, int>> part_of;  // (tier, patch) of each part
   std::vector<PartGeometry> geometry;
 
-  Impl(const CompositeLayout& l, MPI_Comm comm) : layout(l), base(l.base, comm) {
+  MPI_Comm comm;
+  int rank = 0, nranks = 1;
+  long long relaxed_finest = 0, relaxed_all = 0;  // cells relaxed by this rank in the current solve
+  void count(int t, long long n) {
+    relaxed_all += n;
+    if (t + 1 == static_cast<int>(tiers.size())) relaxed_finest += n;
+  }
+
+  Impl(const CompositeLayout& l, MPI_Comm c) : layout(l), base(l.base, c), comm(c) {
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &nranks);
     const GridShape& b = l.base;
     const int L = l.finest();
     if (L > 0)
@@ -151,6 +171,17 @@ struct CompositeMultigrid::Impl {
     }
     if (b.dimension == 2)
       for (int t = 1; t <= L; ++t) build_runs(tiers[static_cast<std::size_t>(t)]);
+    for (int t = 1; t <= L; ++t) {
+      Tier& T = tiers[static_cast<std::size_t>(t)];
+      std::vector<std::vector<int>> singles;
+      for (std::size_t p = 0; p < T.patches.size(); ++p) singles.push_back({static_cast<int>(p)});
+      T.points = split(T, singles);
+      for (int d = 0; d < 2; ++d) {
+        std::vector<std::vector<int>> units;
+        for (const auto& R : T.runs[static_cast<std::size_t>(d)]) units.push_back(R.patches);
+        T.lines[static_cast<std::size_t>(d)] = split(T, units);
+      }
+    }
     for (int t = 0; t <= L; ++t)
       for (std::size_t p = 0; p < tiers[static_cast<std::size_t>(t)].patches.size(); ++p) {
         part_of.emplace_back(t, static_cast<int>(p));
@@ -180,6 +211,57 @@ struct CompositeMultigrid::Impl {
     return i;
   }
   bool refined() const { return tiers.size() > 1; }
+
+  typename Tier::Split split(const Tier& T, std::vector<std::vector<int>> units) const {
+    typename Tier::Split S;
+    S.units = std::move(units);
+    std::vector<std::size_t> cells(S.units.size(), 0);
+    std::size_t total = 0;
+    for (std::size_t u = 0; u < S.units.size(); ++u) {
+      for (int p : S.units[u]) cells[u] += T.patches[static_cast<std::size_t>(p)].cells();
+      total += cells[u];
+    }
+    S.first.assign(static_cast<std::size_t>(nranks) + 1, S.units.size());
+    S.first[0] = 0;
+    std::size_t u = 0, done = 0;
+    for (int r = 1; r < nranks; ++r) {
+      const std::size_t target = total * static_cast<std::size_t>(r) / static_cast<std::size_t>(nranks);
+      while (u < S.units.size() && done + cells[u] / 2 < target) done += cells[u++];
+      S.first[static_cast<std::size_t>(r)] = u;
+    }
+    S.counts.assign(static_cast<std::size_t>(nranks), 0);
+    S.displs.assign(static_cast<std::size_t>(nranks), 0);
+    for (int r = 0; r < nranks; ++r) {
+      std::size_t n = 0;
+      for (std::size_t v = S.first[static_cast<std::size_t>(r)]; v < S.first[static_cast<std::size_t>(r) + 1]; ++v) n += cells[v];
+      S.counts[static_cast<std::size_t>(r)] = static_cast<int>(n);
+      if (r > 0) S.displs[static_cast<std::size_t>(r)] = S.displs[static_cast<std::size_t>(r) - 1] + S.counts[static_cast<std::size_t>(r) - 1];
+    }
+    return S;
+  }
+  // This rank's units of a split.
+  std::pair<std::size_t, std::size_t> mine(const typename Tier::Split& S) const {
+    return {S.first[static_cast<std::size_t>(rank)], S.first[static_cast<std::size_t>(rank) + 1]};
+  }
+  // After a pass: every rank receives the interiors its partners updated.
+  void exchange(Tier& T, const typename Tier::Split& S) {
+    if (nranks == 1) return;
+    std::vector<double> mine_buf, all(static_cast<std::size_t>(S.displs.back() + S.counts.back()));
+    const auto [u0, u1] = mine(S);
+    for (std::size_t u = u0; u < u1; ++u)
+      for (int p : S.units[u]) {
+        const Level& P = T.patches[static_cast<std::size_t>(p)];
+        for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { mine_buf.push_back(P.u[static_cast<std::size_t>(g)]); });
+      }
+    MPI_Allgatherv(mine_buf.data(), static_cast<int>(mine_buf.size()), MPI_DOUBLE, all.data(), S.counts.data(), S.displs.data(),
+                   MPI_DOUBLE, comm);
+    std::size_t at = 0;
+    for (const auto& unit : S.units)
+      for (int p : unit) {
+        Level& P = T.patches[static_cast<std::size_t>(p)];
+        for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { P.u[static_cast<std::size_t>(g)] = all[at++]; });
+      }
+  }
 
   static void build_runs(Tier& T) {
     for (int d = 0; d < 2; ++d) {
@@ -584,7 +666,9 @@ struct CompositeMultigrid::Impl {
   }
 
   // Relaxation of a tier's patches: zebra lines in both directions (2D) or red-black points (1D,
-  // 3D), ghosts refilled before each pass and held during it. 2D lines run through whole runs of
+  // 3D), ghosts refilled before each pass and held during it. Each rank relaxes its units (patches
+  // or runs) and the results are exchanged: a unit reads only ghosts and its own cells, so the
+  // bits do not depend on the number of ranks. 2D lines run through whole runs of
   // patches (a row split into patches is one line); both colours of a pass are solved on the run's
   // copy. (Exact line solves of whole 1D patches with held ends would leave kinks at the patch ends
   // that the coarse correction removes slowly: points converge at 0.1-0.2 per cycle instead.)
@@ -596,19 +680,28 @@ struct CompositeMultigrid::Impl {
       for (int sweep = 0; sweep < sweeps; ++sweep)
         for (int d = 0; d < 2; ++d) {
           fill(t, eq, par);
-          for (auto& R : T.runs[static_cast<std::size_t>(d)]) {
+          const auto& S = T.lines[static_cast<std::size_t>(d)];
+          const auto [u0, u1] = mine(S);
+          for (std::size_t u = u0; u < u1; ++u) {
+            auto& R = T.runs[static_cast<std::size_t>(d)][u];
             copy_run<true>(T, R, d, &Level::u, true);
             const Lines ln(R.level, d);
-            for (int colour = 0; colour < 2; ++colour) line_pass(R.level, ln, colour, 0, ln.count);
+            for (int colour = 0; colour < 2; ++colour) count(t, line_pass(R.level, ln, colour, 0, ln.count));
             copy_run<false>(T, R, d, &Level::u, false);
           }
+          exchange(T, S);
         }
       return;
     }
+    const auto [u0, u1] = mine(T.points);
     for (int sweep = 0; sweep < sweeps; ++sweep)
       for (int colour = 0; colour < 2; ++colour) {
         fill(t, eq, par);
-        for (auto& P : T.patches) red_black_pass(P, full_range(P), colour);
+        for (std::size_t u = u0; u < u1; ++u) {
+          Level& P = T.patches[static_cast<std::size_t>(T.points.units[u][0])];
+          count(t, red_black_pass(P, full_range(P), colour));
+        }
+        exchange(T, T.points);
       }
   }
 
@@ -826,6 +919,7 @@ SolveStats CompositeMultigrid::solve(const CompositeEquation& eq, CompositeField
     return m.base.solve(m.base_equation(eq), u.part[0], s);
   }
   m.set_equation(eq);
+  m.relaxed_finest = m.relaxed_all = 0;
   const ScalarEquation& bc = eq.boundary;
   const auto par = Impl::parity_factors(bc);
   SolveStats st;
@@ -873,6 +967,7 @@ SolveStats CompositeMultigrid::solve(const CompositeEquation& eq, CompositeField
   st.residual = res;
   st.converged = res <= std::max(s.tolerance * st.scale, noise);
   st.factor = st.cycles > 0 && st.initial_residual > 0 ? std::pow(res / st.initial_residual, 1.0 / st.cycles) : 0.0;
+  st.relaxed_cells = m.relaxed_finest, st.relaxed_cells_all = m.relaxed_all;  // patches only (refined levels)
   m.store(u);
   return st;
 }

@@ -10,7 +10,9 @@
 #include <numbers>
 
 #include "XCFC/multigrid.hpp"
+#include "XCFC/composite_multigrid.hpp"
 #include "manufactured.hpp"
+#include "refined_layouts.hpp"
 
 namespace {
 
@@ -122,3 +124,72 @@ TEST(XCFCMultigridMPI, Spherical2D) {
 }
 
 }  // namespace
+
+// Composite (refined) grids: patches relaxed by their owning rank and exchanged after each pass; the
+// composite solve with MPI_COMM_WORLD must give the bits of the MPI_COMM_SELF one.
+namespace {
+
+void check_composite(const char* name, const GridShape& base, std::array<int, 3> patch, const std::vector<Box>& boxes) {
+  const CompositeLayout lay = nested_layout(base, patch, boxes);
+  ASSERT_EQ(lay.finest(), static_cast<int>(boxes.size())) << name;
+  CompositeMultigrid serial(lay), parallel(lay, MPI_COMM_WORLD);
+  for (const bool nonlinear : {true, false}) {
+    const Bump bump{1.0, nonlinear ? 0.3 : -0.3, {0.5, 0.6, 0.7}, {0, 0, 0}};
+    CompositeEquation eq;
+    eq.s0 = serial.field();
+    if (nonlinear) eq.s1 = serial.field(), eq.s7 = serial.field();
+    else eq.k = serial.field();
+    for (int n = 0; n < serial.parts(); ++n) {
+      const GridShape& s = serial.part(n).shape;
+      for_cells(s, [&](std::size_t q, int i, int j, int k) {
+        const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
+        const double u = bump(X), lap = bump.laplacian(X), w = std::exp(-0.3 * (X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
+        if (nonlinear) {
+          eq.s1.part[n][q] = -0.2 * w, eq.s7.part[n][q] = -0.05 * w;
+          eq.s0.part[n][q] = lap + 0.2 * w / u + 0.05 * w / std::pow(u, 7);
+        } else {
+          eq.k.part[n][q] = 0.3 * w;
+          eq.s0.part[n][q] = lap - 0.3 * w * u;
+        }
+      });
+    }
+    eq.boundary.far_value = 1.0;
+    SolveSettings set;
+    set.tolerance = 1e-9;
+    set.full_multigrid = nonlinear;
+    CompositeField a = serial.field(1.0), b = serial.field(1.0);
+    const SolveStats sa = serial.solve(eq, a, set), sb = parallel.solve(eq, b, set);
+    EXPECT_TRUE(sa.converged) << name;
+    EXPECT_EQ(sa.cycles, sb.cycles) << name;
+    EXPECT_TRUE(same_bits(sa.history, sb.history)) << name;
+    for (int n = 0; n < serial.parts(); ++n) EXPECT_TRUE(same_bits(a.part[n], b.part[n])) << name << " part " << n;
+    // The finest level's relaxation is split: the ranks' counts add up to the serial one.
+    int rank = 0, nranks = 1;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+    long long mine = sb.relaxed_cells, total = 0;
+    MPI_Allreduce(&mine, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_EQ(total, sa.relaxed_cells) << name;
+    EXPECT_GT(sa.relaxed_cells, 0) << name;
+    if (nranks == 2) EXPECT_NEAR(double(mine) / double(total), 0.5, 0.1) << name;
+    if (rank == 0)
+      std::printf("composite %-14s %s: %d parts, %d V-cycles, bits equal to one rank; finest level relaxed by rank 0: %.3f\n", name,
+                  nonlinear ? "psi-type " : "alpsi-type", serial.parts(), sa.cycles, double(mine) / double(total));
+  }
+}
+
+}  // namespace
+
+TEST(XCFCMultigridMPI, CompositeSpherical2D) {
+  using B = Boundary;
+  const GridShape s = make_shape(CoordinateSystem::spherical, 2, {64, 16, 1}, {0, 0, 0}, {8, std::numbers::pi / 2, 2 * std::numbers::pi},
+                                 {{{B::origin, B::outer}, {B::axis, B::reflect}, {B::outer, B::outer}}});
+  check_composite("spherical 2D", s, {8, 8, 1}, {{{{0, 3}, {0, 2}, {0, 7}}}, {{{0, 1.5}, {0, 2}, {0, 7}}}});
+}
+
+TEST(XCFCMultigridMPI, CompositeCartesian3D) {
+  using B = Boundary;
+  const GridShape s = make_shape(CoordinateSystem::cartesian, 3, {16, 16, 16}, {0, 0, 0}, {4, 4, 4},
+                                 {{{B::reflect, B::outer}, {B::reflect, B::outer}, {B::reflect, B::outer}}});
+  check_composite("cartesian 3D", s, {4, 4, 4}, {{{{0, 2}, {0, 2}, {0, 2}}}, {{{0, 1}, {0, 1}, {0, 1}}}});
+}
