@@ -522,14 +522,14 @@ struct CompositeMultigrid::Impl {
   // Volume-weighted restriction of interior values of every patch of tier t into its parent's
   // covered cells (interior arrays via accessors).
   template <class Fine, class Coarse>
-  void restrict_tier(int t, Fine&& fine, Coarse&& coarse) {
-    Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
+  void restrict_tier(int t, Fine&& fine, Coarse&& coarse) const {
+    const Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
+    std::vector<double> sum, vol;
     for (std::size_t p = 0; p < T.patches.size(); ++p) {
       const Level& P = T.patches[p];
       const Level& Q = C.patches[static_cast<std::size_t>(T.parent[p])];
-      std::vector<double>& sum = C.scratch[static_cast<std::size_t>(T.parent[p])];
       sum.assign(Q.cells(), 0.0);
-      std::vector<double> vol(Q.cells(), 0.0);
+      vol.assign(Q.cells(), 0.0);
       for (int k = 0; k < P.shape.n[2]; ++k)
         for (int j = 0; j < P.shape.n[1]; ++j)
           for (int i = 0; i < P.shape.n[0]; ++i) {
@@ -880,24 +880,9 @@ CompositeField CompositeMultigrid::field(double value) const {
 
 void CompositeMultigrid::fill_covered(CompositeField& f) const {
   const Impl& m = *impl_;
-  for (int t = static_cast<int>(m.tiers.size()) - 1; t >= 1; --t) {
-    const auto& T = m.tiers[static_cast<std::size_t>(t)];
-    for (std::size_t p = 0; p < T.patches.size(); ++p) {
-      const Level& P = T.patches[p];
-      const std::vector<double>& fine = f.part.at(m.part_index(t, p));
-      std::vector<double>& coarse = f.part.at(m.part_index(t - 1, static_cast<std::size_t>(T.parent[p])));
-      std::vector<double> sum(coarse.size(), 0.0), vol(coarse.size(), 0.0);
-      for (int k = 0; k < P.shape.n[2]; ++k)
-        for (int j = 0; j < P.shape.n[1]; ++j)
-          for (int i = 0; i < P.shape.n[0]; ++i) {
-            const std::size_t q = P.cell(i, j, k), qc = m.coarse_cell(t, p, i, j, k);
-            sum[qc] += P.volume[q] * fine[q];
-            vol[qc] += P.volume[q];
-          }
-      for (std::size_t qc = 0; qc < coarse.size(); ++qc)
-        if (vol[qc] > 0) coarse[qc] = sum[qc] / vol[qc];
-    }
-  }
+  for (int t = static_cast<int>(m.tiers.size()) - 1; t >= 1; --t)
+    m.restrict_tier(t, [&](std::size_t p, std::size_t q) { return f.part[m.part_index(t, p)][q]; },
+                    [&](std::size_t p, std::size_t q) -> double& { return f.part[m.part_index(t - 1, p)][q]; });
 }
 
 CompositeField CompositeMultigrid::with_ghosts(const ScalarEquation& boundary, const CompositeField& u) {

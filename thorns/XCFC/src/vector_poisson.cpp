@@ -54,16 +54,6 @@ ScalarEquation chi_equation() { return ScalarEquation{}; }
 
 namespace {
 
-// Interior cells of a part: f(q, p, i, j, k) with q the interior and p the ghosted index.
-template <class F>
-void for_part_cells(const PartGeometry& g, F&& f) {
-  const GridShape& s = g.shape;
-  std::size_t q = 0;
-  for (int k = 0; k < s.n[2]; ++k)
-    for (int j = 0; j < s.n[1]; ++j)
-      for (int i = 0; i < s.n[0]; ++i) f(q++, static_cast<std::size_t>(g.at(i, j, k)), i, j, k);
-}
-
 VectorField sized(const CompositeMultigrid& mg, bool ghosted) {
   VectorField out;
   for (auto& c : out)
