@@ -308,17 +308,25 @@ std::string Simulation::termination_reason() {
   return reason;
 }
 
-void Simulation::progress_line(double wall_start, std::int64_t it_start, double t_last, std::int64_t it_last) {
+double Simulation::progress_fraction() {
+  double fraction = 0;
+  for (const auto& [thorn, fn] : catalog_.hooks().progress)
+    if (std::find(active_.begin(), active_.end(), thorn) != active_.end()) fraction = std::max(fraction, fn(*ctx_));
+  return fraction;
+}
+
+void Simulation::progress_line(double wall_start, double fraction_start, std::int64_t it_start, double t_last,
+                               std::int64_t it_last) {
   if (ctx_->rank() != 0 || opts_.quiet) return;
   const double now = MPI_Wtime();
   const auto& c = ctx_->clock();
   const double cells = grid_ ? static_cast<double>(grid_->global_cells()) : 0.0;
   const double rate = now > t_last ? cells * static_cast<double>(c.iteration - it_last) / (now - t_last) : 0.0;
-  double fraction = 0;
-  for (const auto& [thorn, fn] : catalog_.hooks().progress)
-    if (std::find(active_.begin(), active_.end(), thorn) != active_.end()) fraction = std::max(fraction, fn(*ctx_));
+  const double fraction = progress_fraction();
   const double elapsed = now - wall_start;
-  const double eta = fraction > 0 && c.iteration > it_start ? elapsed * (1 - fraction) / fraction : -1;
+  // From the progress made by this process (a recovered run starts part-way).
+  const double done = fraction - fraction_start;
+  const double eta = done > 0 && c.iteration > it_start ? elapsed * (1 - fraction) / done : -1;
   std::printf("it %8lld  t %.6e  dt %.3e  %.3e zone-updates/s  wall %s  ETA %s\n", static_cast<long long>(c.iteration),
               c.time, c.dt, rate, format_seconds(elapsed).c_str(), format_seconds(eta).c_str());
   std::fflush(stdout);
@@ -360,6 +368,7 @@ void Simulation::evolve() {
   const auto& every = params_.get<std::int64_t>("Flesh", "progress_every");
   const double wall_start = MPI_Wtime();
   const std::int64_t it_start = ctx.iteration();
+  const double fraction_start = progress_fraction();
   double t_last = wall_start;
   std::int64_t it_last = it_start;
   for (;;) {
@@ -378,7 +387,7 @@ void Simulation::evolve() {
     s.run_bin("analysis", ctx);
     s.run_bin("checkpoint", ctx);
     if (every > 0 && ctx.iteration() % every == 0) {
-      progress_line(wall_start, it_start, t_last, it_last);
+      progress_line(wall_start, fraction_start, it_start, t_last, it_last);
       t_last = MPI_Wtime();
       it_last = ctx.iteration();
     }

@@ -75,7 +75,8 @@ class Simulation {
  private:
   void evolve();
   std::string termination_reason();
-  void progress_line(double wall_start, std::int64_t it_start, double t_last, std::int64_t it_last);
+  double progress_fraction();
+  void progress_line(double wall_start, double fraction_start, std::int64_t it_start, double t_last, std::int64_t it_last);
 
   const ThornCatalog& catalog_;
   SimulationOptions opts_;
