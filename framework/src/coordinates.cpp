@@ -62,16 +62,17 @@ double centroid(CoordinateSystem c, int d, double a, double b) {
   return m;
 }
 
-Point3 metric_diagonal(CoordinateSystem c, const Point3& x) {
+Point3 metric_diagonal(CoordinateSystem c, const Point3& x, double s) {
   switch (c) {
     case CoordinateSystem::cartesian: return {1, 1, 1};
     case CoordinateSystem::cylindrical: return {1, 1, x[0] * x[0]};
-    case CoordinateSystem::spherical: {
-      const double s = std::sin(x[1]);
-      return {1, x[0] * x[0], x[0] * x[0] * s * s};
-    }
+    case CoordinateSystem::spherical: return {1, x[0] * x[0], x[0] * x[0] * s * s};
   }
   return {1, 1, 1};
+}
+
+Point3 metric_diagonal(CoordinateSystem c, const Point3& x) {
+  return metric_diagonal(c, x, c == CoordinateSystem::spherical ? std::sin(x[1]) : 0.0);
 }
 
 double sqrt_det_metric(CoordinateSystem c, const Point3& x) {
@@ -79,13 +80,18 @@ double sqrt_det_metric(CoordinateSystem c, const Point3& x) {
 }
 
 Christoffels christoffels(CoordinateSystem c, const Point3& x) {
+  const bool sph = c == CoordinateSystem::spherical;
+  return christoffels(c, x, sph ? std::sin(x[1]) : 0.0, sph ? std::cos(x[1]) : 0.0);
+}
+
+Christoffels christoffels(CoordinateSystem c, const Point3& x, double s, double co) {
   Christoffels g{};
   if (c == CoordinateSystem::cylindrical) {
     const double R = x[0];
     g[0][2][2] = -R;                            // Gamma^R_phiphi
     g[2][0][2] = g[2][2][0] = 1.0 / R;          // Gamma^phi_Rphi
   } else if (c == CoordinateSystem::spherical) {
-    const double r = x[0], s = std::sin(x[1]), co = std::cos(x[1]);
+    const double r = x[0];
     g[0][1][1] = -r;                            // Gamma^r_thth
     g[0][2][2] = -r * s * s;                    // Gamma^r_phph
     g[1][0][1] = g[1][1][0] = 1.0 / r;          // Gamma^th_rth

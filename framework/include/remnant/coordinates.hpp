@@ -37,6 +37,10 @@ double centroid(CoordinateSystem c, int d, double a, double b);
 Point3 metric_diagonal(CoordinateSystem c, const Point3& x);
 double sqrt_det_metric(CoordinateSystem c, const Point3& x);
 Christoffels christoffels(CoordinateSystem c, const Point3& x);
+// The same with the sine and cosine of the polar angle x[1] given (used in spherical coordinates
+// only): hot loops compute them once per row of cells instead of once per cell, with the same bits.
+Point3 metric_diagonal(CoordinateSystem c, const Point3& x, double sin_theta);
+Christoffels christoffels(CoordinateSystem c, const Point3& x, double sin_theta, double cos_theta);
 
 // Cartesian position of the point x (valid for negative R, r, theta too: the extended chart
 // whose ghost cells across an axis or the origin the grid fills).

@@ -45,12 +45,13 @@ struct CellAccess {
 template <class F>
 void for_cells(Block& b, const CellAccess& acc, F&& f) {
   const bool cartesian = b.coordinates == CoordinateSystem::cartesian;
+  const PolarTrig trig(b);
   std::array<double, 3> fd{1, 1, 1};
   for (int k = 0; k < b.n[2]; ++k)
     for (int j = 0; j < b.n[1]; ++j)
       for (int i = 0; i < b.n[0]; ++i) {
         const std::ptrdiff_t o = i + j * acc.met[0].sj + k * acc.met[0].sk;
-        if (!cartesian) fd = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k));
+        if (!cartesian) fd = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k), trig.sin_centre(j));
         const double psi = acc.met[kPsi].origin[o], p2 = psi * psi;
         f(o, p2 * p2, p2 * p2 * p2, fd);
       }

@@ -70,6 +70,7 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
   const int a = d == 0 ? 1 : 0, c2 = d == 2 ? 1 : 2;
   const CoordinateSystem cs = b.coordinates;
   const bool cartesian = cs == CoordinateSystem::cartesian;
+  const PolarTrig trig(b);
 
   for (int ic = 0; ic < b.n[c2]; ++ic)
     for (int ia = 0; ia < b.n[a]; ++ia) {
@@ -115,7 +116,7 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
                                    face_value(s.metric_faces, L.met[kBeta3], f)};
         if (!cartesian) {
           x[d] = b.face_coordinate(d, f);
-          fd = coords::metric_diagonal(cs, x);
+          fd = coords::metric_diagonal(cs, x, d == 1 ? trig.sin_face(f) : trig.sin_centre(idx[1]));
         }
         const PointMetric pm = cartesian ? point_metric_cartesian(psi, alpha, beta) : point_metric(psi, alpha, beta, fd);
         FluidState sl, sr;
@@ -179,6 +180,7 @@ void divergence_and_sources(const Groups& g, Block& b) {
   std::array<std::array<double, 3>, 3> df{};
   Point3 fd{1.0, 1.0, 1.0};
   Christoffels gam{};
+  const PolarTrig trig(b);
   for (int k = 0; k < b.n[2]; ++k)
     for (int j = 0; j < b.n[1]; ++j)
       for (int i = 0; i < b.n[0]; ++i) {
@@ -199,8 +201,8 @@ void divergence_and_sources(const Groups& g, Block& b) {
         const std::array<double, 3> beta{met[kBeta1].origin[o], met[kBeta2].origin[o], met[kBeta3].origin[o]};
         if (!cartesian) {
           const Point3 x = cell_point(b, i, j, k);
-          fd = coords::metric_diagonal(cs, x);
-          gam = coords::christoffels(cs, x);
+          fd = coords::metric_diagonal(cs, x, trig.sin_centre(j));
+          gam = coords::christoffels(cs, x, trig.sin_centre(j), trig.cos_centre(j));
           df = metric_diagonal_derivatives(fd, gam);
         }
         const PointMetric pm = point_metric(psi, alpha, beta, fd);

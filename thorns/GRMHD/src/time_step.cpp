@@ -17,9 +17,10 @@ double block_inverse_dt(const Groups& g, Block& b) {
   for (int d = 0; d < 3; ++d)
     if (direction_used(b, d)) idx[d] = 1.0 / b.dx[d];
   double inv = 0;
+  const PolarTrig trig(b);
   for_interior(b, [&](int i, int j, int k) {
     const std::ptrdiff_t o = i + j * prim[0].sj + k * prim[0].sk;
-    if (!cartesian) fd = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k));
+    if (!cartesian) fd = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k), trig.sin_centre(j));
     const PointMetric pm = point_metric(met[kPsi].origin[o], met[kAlpha].origin[o],
                                         {met[kBeta1].origin[o], met[kBeta2].origin[o], met[kBeta3].origin[o]}, fd);
     FluidState s;

@@ -26,6 +26,12 @@ class IdealGas {
     b_.press_min = 0;
   }
   double gamma() const { return g_; }
+  // Entropy index ln(p / rho^Gamma) / (Gamma - 1): constant along adiabats (not in Thermo: the
+  // evolution's EOS calls would pay a log and a pow each).
+  double entropy_index(double rho, double eps) const {
+    const double p = (g_ - 1) * rho * eps;
+    return p > 0 ? std::log(p / std::pow(rho, g_)) / (g_ - 1) : 0.0;
+  }
   const Bounds& bounds() const { return b_; }
   bool has_chemical_potentials() const { return false; }
   bool has_composition() const { return false; }
@@ -61,8 +67,6 @@ class IdealGas {
     o.press = (g_ - 1) * rho * eps;
     o.h = 1 + eps + o.press / rho;
     o.cs2 = g_ * o.press / (rho * o.h);
-    // Entropy index ln(p / rho^Gamma) / (Gamma - 1): constant along adiabats.
-    o.entropy = o.press > 0 ? std::log(o.press / std::pow(rho, g_)) / (g_ - 1) : 0.0;
     return o;
   }
   double g_, mb_;

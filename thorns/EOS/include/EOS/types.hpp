@@ -5,7 +5,9 @@
 
 namespace remnant::eos {
 
-// Thermodynamic state in code units (T in MeV). h = 1 + eps + p/rho.
+// Thermodynamic state in code units (T in MeV). h = 1 + eps + p/rho. entropy (kB per baryon) is
+// filled by tabulated EOSs; analytic ones leave it 0 (it costs a log and a pow per call, and the
+// evolution never reads it; IdealGas::entropy_index gives the ideal gas's).
 struct Thermo {
   double press = 0, eps = 0, cs2 = 0, h = 1, entropy = 0;
 };
