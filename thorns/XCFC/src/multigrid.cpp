@@ -134,7 +134,8 @@ struct Multigrid::Impl {
   // need the halo rows between colours; lines along s cross the slabs, so they are solved whole,
   // split by i, from a complete level (Allgatherv), with the neighbouring lines exchanged between
   // colours and the result made complete again.
-  void smooth_lines(std::size_t l, const ScalarEquation& eq, int d) {
+  // Lines t < limit only: the local relaxation next to the origin.
+  void smooth_lines(std::size_t l, const ScalarEquation& eq, int d, int limit = std::numeric_limits<int>::max()) {
     Level& L = levels[l];
     const auto& p = work.part(l);
     const Lines ln(L, d);
@@ -142,6 +143,7 @@ struct Multigrid::Impl {
     int t0 = 0, t1 = ln.count;
     if (along) t0 = p.line_lo, t1 = p.line_hi, work.replicate(l, L.u, true);
     else if (p.dist) t0 = p.lo, t1 = p.hi;
+    t1 = std::max(t0, std::min(t1, limit));
     long long n = 0;
     for (int colour = 0; colour < (ln.count > 1 ? 2 : 1); ++colour) {
       if (along) {
@@ -191,6 +193,10 @@ struct Multigrid::Impl {
     }
     for (int sweep = 0; sweep < sweeps; ++sweep)
       for (int d = 0; d < 2; ++d) smooth_lines(l, eq, d);
+    // 2D spherical: extra theta-line passes over the innermost radial cells (Brandt's local
+    // relaxation), where the operator's largest coefficients leave the largest residual.
+    if (levels[l].shape.boundary[0][0] == Boundary::origin)
+      for (int pass = 0; pass < 2; ++pass) smooth_lines(l, eq, 1, std::min(4, levels[l].shape.n[0]));
   }
 
   // ---- cycles ------------------------------------------------------------------------------------
