@@ -80,15 +80,48 @@ Sources gather_sources(const GridBridge& br, const MatterGroups& g) {
   return s;
 }
 
-void load_warm_start(const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st) {
-  st.psi = br.gather(g.metric, 0);
-  st.alpha_psi = br.gather_cells([&](Block& b, int i, int j, int k) { return b.field(g.metric, 0)(i, j, k) * b.field(g.metric, 1)(i, j, k); });
-  for (int a = 0; a < 3; ++a) {
-    st.X_potentials.B[a] = br.gather(potentials, a);
-    st.beta_potentials.B[a] = br.gather(potentials, 4 + a);
+// The warm starts: the last solve's psi, alpha psi and potentials, or, once two solves are recorded,
+// their linear extrapolation in time to now (w = (t - t_last) / (t_last - t_before)): the change
+// between solves is then left to second order, which saves V-cycles (README, "Cadence").
+void load_warm_start(Context& ctx, const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st) {
+  const Runtime& rt = runtime();
+  const bool extrapolate = rt.history >= 2 && rt.t_last > rt.t_before && ctx.time() > rt.t_last;
+  const double w = extrapolate ? (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before) : 0.0;
+  const int hist = ctx.var("XCFC::metric_history"), before = ctx.var("XCFC::potentials_before");
+  if (extrapolate) {
+    auto ext = [&](Block& b, int c, int i, int j, int k) {
+      const double last = b.field(hist, c)(i, j, k);
+      return last + w * (last - b.field(hist, 5 + c)(i, j, k));
+    };
+    st.psi = br.gather_cells([&](Block& b, int i, int j, int k) { return ext(b, 0, i, j, k); });
+    st.alpha_psi = br.gather_cells([&](Block& b, int i, int j, int k) { return ext(b, 0, i, j, k) * ext(b, 1, i, j, k); });
+  } else {
+    st.psi = br.gather(g.metric, 0);
+    st.alpha_psi = br.gather_cells([&](Block& b, int i, int j, int k) { return b.field(g.metric, 0)(i, j, k) * b.field(g.metric, 1)(i, j, k); });
   }
-  st.X_potentials.chi = br.gather(potentials, 3);
-  st.beta_potentials.chi = br.gather(potentials, 7);
+  auto potential = [&](int c) {
+    if (!extrapolate) return br.gather(potentials, c);
+    return br.gather_cells([&](Block& b, int i, int j, int k) {
+      const double last = b.field(potentials, c)(i, j, k);
+      return last + w * (last - b.field(before, c)(i, j, k));
+    });
+  };
+  for (int a = 0; a < 3; ++a) {
+    st.X_potentials.B[a] = potential(a);
+    st.beta_potentials.B[a] = potential(4 + a);
+  }
+  st.X_potentials.chi = potential(3);
+  st.beta_potentials.chi = potential(7);
+}
+
+// XCFC::potentials (the last solve's) -> XCFC::potentials_before, before the new ones are stored.
+void shift_potentials(Context& ctx, int potentials) {
+  const int before = ctx.var("XCFC::potentials_before");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < 8; ++c) {
+      Field p = b->field(potentials, c), q = b->field(before, c);
+      for_interior(*b, [&](int i, int j, int k) { q(i, j, k) = p(i, j, k); });
+    }
 }
 
 void store_lapse_shift(const GridBridge& br, const MatterGroups& g, int potentials, const XcfcState& st) {
@@ -180,13 +213,14 @@ struct Solve {
   Solve(Context& ctx, bool initial)
       : sv(solver(ctx)), br(ctx, sv.multigrid()), g(MatterGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
         set(settings(ctx, initial)) {
-    load_warm_start(br, g, potentials, st);
+    load_warm_start(ctx, br, g, potentials, st);
   }
 
   void finish(Context& ctx, const Sources& src, const char* reason) {
     const CompositeField S =
         br.gather_cells([&](Block& b, int i, int j, int k) { return densitised_stress_trace(b, g, i, j, k); });
     sv.solve_lapse_and_shift(src.E, src.S, S, st, stats, set);
+    shift_potentials(ctx, potentials);
     store_lapse_shift(br, g, potentials, st);
     record_history(ctx);
     ++runtime().solves;
