@@ -124,3 +124,11 @@ TEST(XCFCTovMetric, RefinedSpherical2D) {
 TEST(XCFCTovMetric, RefinedCylindrical2D) {
   expect_second_order("AMR cyl. 2D", cylindrical_2d(), {4, 4, 1}, {box(0, 7, 0, 7), box(0, 3.5, 0, 3.5)});
 }
+
+TEST(XCFCTovMetric, RefinedCartesian3D) {
+  using B = Boundary;
+  const GridShape octant = make_shape(CoordinateSystem::cartesian, 3, {8, 8, 8}, {0, 0, 0}, {16, 16, 16},
+                                      {{{B::reflect, B::outer}, {B::reflect, B::outer}, {B::reflect, B::outer}}});
+  const Box level1{{{0, 8}, {0, 8}, {0, 8}}}, level2{{{0, 4}, {0, 4}, {0, 4}}};
+  expect_second_order("AMR cart. 3D", octant, {4, 4, 4}, {level1, level2});
+}
