@@ -201,6 +201,12 @@ function(remnant_thorn_bench name)
   endif()
   target_compile_definitions(${target} PRIVATE
     REMNANT_SOURCE_DIR="${CMAKE_SOURCE_DIR}" REMNANT_SHARED_EOS_DIR="${CMAKE_SOURCE_DIR}/../shared/eos")
+  # Smoke test: every benchmark once, briefly (a benchmark that crashes or aborts fails the suite;
+  # the timings themselves are not tested).
+  if(REMNANT_BUILD_TESTS)
+    add_test(NAME bench.${name}.smoke COMMAND ${target} --benchmark_min_time=0.0001)
+    set_tests_properties(bench.${name}.smoke PROPERTIES LABELS "bench;${name}" TIMEOUT 300)
+  endif()
 endfunction()
 
 # Regression suites: testsuites/<Thorn>/<test>/test.yaml, each run on 1 and 2 MPI ranks.

@@ -108,8 +108,10 @@ struct CompositeMultigrid::Impl {
   }
 
   Impl(const CompositeLayout& l, MPI_Comm c) : layout(l), base(l.base, c), comm(c) {
-    MPI_Comm_rank(comm, &rank);
-    MPI_Comm_size(comm, &nranks);
+    if (comm != MPI_COMM_SELF) {  // MPI_COMM_SELF needs no MPI call (unit tests, benchmarks without MPI_Init)
+      MPI_Comm_rank(comm, &rank);
+      MPI_Comm_size(comm, &nranks);
+    }
     const GridShape& b = l.base;
     const int L = l.finest();
     if (L > 0)
