@@ -13,6 +13,10 @@
                  conserved apart from atmosphere losses
   trigger        solve_every large, XCFC::residual_trigger on: early solves are made (reason
                  'residual'), fewer for a looser trigger, none when it is off
+  migration      parfiles/migration.yaml in 1D (the unstable-branch star, solved every step) for
+                 3.2 ms: rho_c falls below 0.1 rho_c(0), then oscillates with decreasing peaks about
+                 the stable-branch star of the same mass (rho_c = 1.346e-3, 0.168 rho_c(0)): the
+                 migration of the paper's test (the 2D run to 10 ms is a parfile, not a CI test)
   amr            composite (AMR) solves: a base of 320 cells refined once around the star follows a
                  uniform 640-cell run (10x closer than a uniform 320-cell run does, in rho_c, alpha_c
                  and psi_c over 300 steps); an adaptive run (Loehner on rho, two levels, regrid
@@ -146,9 +150,37 @@ def mode_amr(r):
     print("adaptive run: analysis.tsv and xcfc.tsv bit-identical on 1 and 2 ranks and after a 1 -> 2 rank restart")
 
 
+def mode_migration(r):
+    parfile = os.path.abspath(os.path.join(r.a.source_dir, "parfiles", "migration.yaml"))
+    out, _ = remnant_runs.Runner(r.a, parfile, ["Flesh::timers=false", "Flesh::progress_every=0"]).run(
+        "migration_1d", 1, ["Grid::dimension=1", "Grid::boundary_upper=[outflow,outflow,outflow]", "MoL::final_time=650",
+                            "XCFC::solve_every=1"])
+    c = columns(os.path.join(out, "analysis.tsv"))
+    t, rho, m = c["time"] * 4.925490947641267e-3, c["rho_c"] / c["rho_c"][0], c["rest_mass"]
+    stable = 1.346e-3 / 7.993e-3
+    i_min = int(np.argmin(rho))
+    # The peak of each excursion above the stable-branch value after the first minimum.
+    peaks, cur = [], None
+    for v in rho[i_min:]:
+        if v > stable:
+            cur = v if cur is None else max(cur, v)
+        elif cur is not None:
+            peaks.append(cur)
+            cur = None
+    late = rho[t > t[-1] - 1.0]
+    print("migration 1D to %.2f ms: min rho_c %.3f rho_c(0) at %.2f ms; peaks after it %s; mean over the last ms %.3f"
+          " (stable branch %.3f); rest-mass change %.3e" % (t[-1], rho[i_min], t[i_min], ["%.3f" % p for p in peaks],
+                                                           np.mean(late), stable, m[-1] / m[0] - 1))
+    assert rho[i_min] < 0.1 and t[i_min] < 1.0, "the star does not expand off the unstable branch"
+    assert len(peaks) >= 3 and peaks[0] > peaks[1] > peaks[2], "the oscillations are not damped: %s" % peaks
+    assert 0.6 * stable < np.mean(late) < 1.4 * stable, "rho_c does not settle about the stable branch"
+    assert abs(m[-1] / m[0] - 1) < 0.1
+
+
 def main():
     remnant_runs.main(make_runner, {"restart": mode_restart, "extrapolation": mode_extrapolation,
-                                    "trigger": mode_trigger, "mass": mode_mass, "amr": mode_amr})
+                                    "trigger": mode_trigger, "mass": mode_mass, "amr": mode_amr,
+                                    "migration": mode_migration})
 
 
 if __name__ == "__main__":
