@@ -99,7 +99,7 @@ void GridBridge::complete(CompositeField& f) const {
 }
 
 CompositeField GridBridge::gather(int group, int comp) const {
-  return gather_cells([&](Block& b, int i, int j, int k) { return b.field(group, comp)(i, j, k); });
+  return gather_cells([&](Block& b) { return b.field(group, comp); });
 }
 
 void GridBridge::scatter(const CompositeField& a, int group, int comp) const {

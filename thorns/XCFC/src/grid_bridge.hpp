@@ -21,14 +21,16 @@ class GridBridge {
   GridBridge(Context& ctx, const CompositeMultigrid& mg);
   // Gathers the interior of component `comp` of `group`.
   CompositeField gather(int group, int comp) const;
-  // Gathers a value computed per cell on the owning rank.
-  template <class F>
-  CompositeField gather_cells(F&& value) const {
+  // Gathers a value computed per cell on the owning rank: per_block(Block&) returns the cell
+  // function value(i, j, k) of that block (so that its Fields are looked up once per block).
+  template <class PerBlock>
+  CompositeField gather_cells(PerBlock&& per_block) const {
     CompositeField out = mg_.field();
     for (Block* b : ctx_.grid().local_blocks()) {
       const Place pl = place(*b);
       std::vector<double>& part = out.part[static_cast<std::size_t>(pl.part)];
-      for_interior(*b, [&](int i, int j, int k) { part[pl.index(i, j, k)] = value(*b, i, j, k); });
+      const auto value = per_block(*b);
+      for_interior(*b, [&](int i, int j, int k) { part[pl.index(i, j, k)] = value(i, j, k); });
     }
     complete(out);
     return out;

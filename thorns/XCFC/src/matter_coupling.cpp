@@ -72,11 +72,16 @@ void conserved_from_primitives(Context& ctx, const MatterGroups& g) {
   }
 }
 
-double densitised_stress_trace(Block& b, const MatterGroups& g, int i, int j, int k) {
-  const double psi = b.field(g.metric, 0)(i, j, k), p2 = psi * psi;
+DensitisedStressTrace::DensitisedStressTrace(Block& b, const MatterGroups& g)
+    : psi(b.field(g.metric, 0)), press(b.field(g.prim, kPress)) {
+  for (int d = 0; d < 3; ++d) S[d] = b.field(g.cons, kS + d), v[d] = b.field(g.prim, kVel1 + d);
+}
+
+double DensitisedStressTrace::operator()(int i, int j, int k) const {
+  const double p = psi(i, j, k), p2 = p * p;
   double sv = 0;
-  for (int d = 0; d < 3; ++d) sv += b.field(g.cons, kS + d)(i, j, k) * b.field(g.prim, kVel1 + d)(i, j, k);
-  return sv + 3 * p2 * p2 * p2 * b.field(g.prim, kPress)(i, j, k);
+  for (int d = 0; d < 3; ++d) sv += S[d](i, j, k) * v[d](i, j, k);
+  return sv + 3 * p2 * p2 * p2 * press(i, j, k);
 }
 
 }  // namespace remnant::xcfc

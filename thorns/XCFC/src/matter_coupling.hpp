@@ -18,7 +18,11 @@ struct MatterGroups {
 std::uint64_t recover_primitives(Context& ctx, const MatterGroups& g);
 // cons = psi^6 * cons(prim, psi^4 f) on the interior.
 void conserved_from_primitives(Context& ctx, const MatterGroups& g);
-// S~ = psi^6 S = S^_i v^i + 3 psi^6 p at a cell (S^_i the densitised momentum).
-double densitised_stress_trace(Block& b, const MatterGroups& g, int i, int j, int k);
+// S~ = psi^6 S = S^_i v^i + 3 psi^6 p per cell (S^_i the densitised momentum), on one block.
+struct DensitisedStressTrace {
+  Field psi, S[3], v[3], press;
+  DensitisedStressTrace(Block& b, const MatterGroups& g);
+  double operator()(int i, int j, int k) const;
+};
 
 }  // namespace remnant::xcfc

@@ -75,7 +75,10 @@ struct Sources {
 
 Sources gather_sources(const GridBridge& br, const MatterGroups& g) {
   Sources s;
-  s.E = br.gather_cells([&](Block& b, int i, int j, int k) { return b.field(g.cons, 0)(i, j, k) + b.field(g.cons, 4)(i, j, k); });
+  s.E = br.gather_cells([&](Block& b) {
+    const Field D = b.field(g.cons, 0), tau = b.field(g.cons, 4);
+    return [=](int i, int j, int k) { return D(i, j, k) + tau(i, j, k); };
+  });
   for (int d = 0; d < 3; ++d) s.S[d] = br.gather(g.cons, 1 + d);
   return s;
 }
@@ -88,23 +91,26 @@ void load_warm_start(Context& ctx, const GridBridge& br, const MatterGroups& g, 
   const bool extrapolate = rt.history >= 2 && rt.t_last > rt.t_before && ctx.time() > rt.t_last;
   const double w = extrapolate ? (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before) : 0.0;
   const int hist = ctx.var("XCFC::metric_history"), before = ctx.var("XCFC::potentials_before");
+  // last + w (last - before) of two fields of a block, per cell.
+  auto extrapolated = [w](Field last, Field prev) {
+    return [=](int i, int j, int k) { return last(i, j, k) + w * (last(i, j, k) - prev(i, j, k)); };
+  };
   if (extrapolate) {
-    auto ext = [&](Block& b, int c, int i, int j, int k) {
-      const double last = b.field(hist, c)(i, j, k);
-      return last + w * (last - b.field(hist, 5 + c)(i, j, k));
-    };
-    st.psi = br.gather_cells([&](Block& b, int i, int j, int k) { return ext(b, 0, i, j, k); });
-    st.alpha_psi = br.gather_cells([&](Block& b, int i, int j, int k) { return ext(b, 0, i, j, k) * ext(b, 1, i, j, k); });
+    st.psi = br.gather_cells([&](Block& b) { return extrapolated(b.field(hist, 0), b.field(hist, 5)); });
+    st.alpha_psi = br.gather_cells([&](Block& b) {
+      const auto psi = extrapolated(b.field(hist, 0), b.field(hist, 5)), alpha = extrapolated(b.field(hist, 1), b.field(hist, 6));
+      return [=](int i, int j, int k) { return psi(i, j, k) * alpha(i, j, k); };
+    });
   } else {
     st.psi = br.gather(g.metric, 0);
-    st.alpha_psi = br.gather_cells([&](Block& b, int i, int j, int k) { return b.field(g.metric, 0)(i, j, k) * b.field(g.metric, 1)(i, j, k); });
+    st.alpha_psi = br.gather_cells([&](Block& b) {
+      const Field psi = b.field(g.metric, 0), alpha = b.field(g.metric, 1);
+      return [=](int i, int j, int k) { return psi(i, j, k) * alpha(i, j, k); };
+    });
   }
   auto potential = [&](int c) {
     if (!extrapolate) return br.gather(potentials, c);
-    return br.gather_cells([&](Block& b, int i, int j, int k) {
-      const double last = b.field(potentials, c)(i, j, k);
-      return last + w * (last - b.field(before, c)(i, j, k));
-    });
+    return br.gather_cells([&](Block& b) { return extrapolated(b.field(potentials, c), b.field(before, c)); });
   };
   for (int a = 0; a < 3; ++a) {
     st.X_potentials.B[a] = potential(a);
@@ -218,7 +224,7 @@ struct Solve {
 
   void finish(Context& ctx, const Sources& src, const char* reason) {
     const CompositeField S =
-        br.gather_cells([&](Block& b, int i, int j, int k) { return densitised_stress_trace(b, g, i, j, k); });
+        br.gather_cells([&](Block& b) { return DensitisedStressTrace(b, g); });
     sv.solve_lapse_and_shift(src.E, src.S, S, st, stats, set);
     shift_potentials(ctx, potentials);
     store_lapse_shift(br, g, potentials, st);
