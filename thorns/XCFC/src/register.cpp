@@ -33,6 +33,7 @@ struct Runtime {
   double t_last = 0, t_before = 0;
   int history = 0;
   bool tsv_started = false;  // xcfc.tsv created (fresh run) or trimmed (recovered run) by this process
+  bool warned_theta = false;
 };
 
 Runtime& runtime() {
@@ -45,11 +46,30 @@ bool same_layout(const CompositeLayout& a, const CompositeLayout& b) {
          a.base.lo == b.base.lo && a.base.dx == b.base.dx && a.patch_cells == b.patch_cells && a.patches == b.patches;
 }
 
+// A refined level whose blocks at the spherical origin do not span every theta: the composite
+// V-cycle then converges slowly (README, "Refined grids"); returns the first such level or 0.
+int level_ending_in_theta_at_origin(const CompositeLayout& lay) {
+  const GridShape& b = lay.base;
+  if (b.coordinates != CoordinateSystem::spherical || b.dimension < 2 || b.boundary[0][0] != Boundary::origin) return 0;
+  for (std::size_t l = 0; l < lay.patches.size(); ++l) {
+    long long covered = 0;
+    for (const auto& c : lay.patches[l])
+      if (c[0] == 0) covered += lay.patch_cells[1];
+    if (covered > 0 && covered < (static_cast<long long>(b.n[1]) << (l + 1))) return static_cast<int>(l) + 1;
+  }
+  return 0;
+}
+
 // The solver of the current mesh, rebuilt when the forest has changed (a regrid).
 XcfcSolver& solver(Context& ctx) {
   Runtime& rt = runtime();
   CompositeLayout lay = layout_of_grid(ctx);
   if (!rt.solver || !same_layout(lay, rt.layout)) {
+    if (const int l = level_ending_in_theta_at_origin(lay); l > 0 && !rt.warned_theta)
+      ctx.warn("XCFC: refinement level " + std::to_string(l) +
+               " ends in theta next to the spherical origin; the composite metric solve converges slowly there "
+               "(refine all theta near the origin, e.g. with a Grid::regions sphere; thorns/XCFC/README.md)"),
+          rt.warned_theta = true;
     rt.layout = lay;
     // The base level's cycles are split between the ranks; patches are computed by every rank.
     rt.solver = lay.patches.empty() ? std::make_unique<XcfcSolver>(lay.base, ctx.grid().comm())

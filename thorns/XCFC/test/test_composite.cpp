@@ -24,6 +24,9 @@ struct RefinedCase {
   std::array<int, 3> patch_cells;
   std::vector<Box> boxes;  // refined regions (coordinates of the grid)
   Bump bump;
+  // Bound on the V-cycle factor at every resolution: interfaces across theta on spherical grids
+  // (strongly anisotropic cells) converge more slowly (0.13-0.38 measured).
+  double max_factor = 0.35;
 };
 
 std::vector<RefinedCase> refined_cases() {
@@ -48,6 +51,21 @@ std::vector<RefinedCase> refined_cases() {
     if (c.shape.dimension == 3) s.patch_cells = {4, 4, 4};
     if (c.shape.dimension == 1) s.patch_cells = {8, 1, 1};
     s.boxes = {b1, b2};
+    out.push_back(s);
+  }
+  // The full sphere (theta in [0, pi]), refined in a northern part away from the origin: theta
+  // interfaces and the axis. (Refined levels that end in theta next to the origin converge slowly:
+  // README, "Refined grids".)
+  {
+    using B = Boundary;
+    RefinedCase s{"spherical 2D full sphere",
+                  make_shape(CoordinateSystem::spherical, 2, {16, 16, 1}, {0, 0, 0}, {5, pi, 2 * pi},
+                             {{{B::origin, B::outer}, {B::axis, B::axis}, {B::outer, B::outer}}}),
+                  {8, 4, 1},
+                  {},
+                  {1.0, 0.3, {0.5, 0.5, 0.8}, {0, 0, 0.4}}};
+    s.boxes = {Box{{{1, 3.5}, {0, pi / 2}, {0, 7}}}, Box{{{1.5, 2.5}, {0, pi / 4}, {0, 7}}}};
+    s.max_factor = 0.45;
     out.push_back(s);
   }
   return out;
@@ -131,7 +149,7 @@ void check(bool nonlinear) {
       EXPECT_EQ(x.levels, 2) << c.name;
     }
     EXPECT_GT(p2, 1.8) << c.name;
-    for (const auto& x : r) EXPECT_LT(x.stats.factor, 0.35) << c.name;  // the same bound at every resolution
+    for (const auto& x : r) EXPECT_LT(x.stats.factor, c.max_factor) << c.name;  // the same bound at every resolution
   }
 }
 

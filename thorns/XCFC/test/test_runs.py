@@ -21,7 +21,7 @@
                  uniform 640-cell run (10x closer than a uniform 320-cell run does, in rho_c, alpha_c
                  and psi_c over 300 steps); an adaptive run (Loehner on rho, two levels, regrid
                  every 10) gives bit-identical analysis.tsv and xcfc.tsv on 1 and 2 ranks and after
-                 a 1 -> 2 rank restart
+                 a 1 -> 2 rank restart; a 2D spherical level ending in theta at the origin is reported
 """
 import os
 import sys
@@ -148,6 +148,16 @@ def mode_amr(r):
         assert rows(os.path.join(one, "analysis.tsv")) == rows(os.path.join(other, "analysis.tsv")), "analysis.tsv differs on " + what
         assert rows(os.path.join(one, "xcfc.tsv"), True) == rows(os.path.join(other, "xcfc.tsv"), True), "xcfc.tsv differs on " + what
     print("adaptive run: analysis.tsv and xcfc.tsv bit-identical on 1 and 2 ranks and after a 1 -> 2 rank restart")
+    # 2D spherical: a refined level that ends in theta next to the origin is reported (slow solves).
+    mig = remnant_runs.Runner(r.a, os.path.abspath(os.path.join(r.a.source_dir, "parfiles", "migration.yaml")),
+                              ["Flesh::timers=false", "Flesh::progress_every=0"])
+    box = ["Grid::ncells=[160,16,1]", "Grid::block_size=[16,8,1]", "Grid::max_level=1", "Grid::regions=[box]",
+           "Grid::region_levels=[1]", "MoL::max_iterations=2"]
+    _, part = mig.run("theta_part", 1, box + ["Grid::region_bounds=[0,4,0,0.5,0,7]"])
+    _, whole = mig.run("theta_all", 1, box + ["Grid::region_bounds=[0,4,0,2,0,7]"])
+    assert "ends in theta next to the spherical origin" in part.stdout, part.stdout[-2000:]
+    assert "ends in theta" not in whole.stdout
+    print("a level ending in theta at the origin is reported, one spanning all theta is not")
 
 
 def mode_migration(r):
