@@ -18,78 +18,16 @@
 #include <utility>
 
 #include "boundary_ghosts.hpp"
+#include "composite_recipes.hpp"
+#include "composite_tier.hpp"
 #include "level.hpp"
 #include "level_ops.hpp"
 #include "line_relaxation.hpp"
 #include "point_relaxation.hpp"
 
 namespace remnant::xcfc {
-namespace {
-
-using Cell = std::array<long long, 3>;
-
-// One contribution to a recipe's value: a stored interior value (tier, patch, ghosted offset), the
-// far value or a Dirichlet value at a face point, times w and the parities of the symmetry faces
-// crossed on the way (bit 2d + side of mask).
-struct Term {
-  enum Kind : unsigned char { stored, far, dirichlet };
-  Kind kind = stored;
-  unsigned char mask = 0;
-  int tier = 0, patch = 0;
-  std::ptrdiff_t p = 0;
-  double w = 0;
-  Point3 x{};
-};
-
-struct Recipe {
-  std::size_t target;      // ghosted offset (ghosts) or window index (windows)
-  std::size_t begin, end;  // terms
-};
-
-// Recipes of one boundary signature (Robin fall-off power or Dirichlet): per [tier][patch] the face
-// ghosts of the patch and the cells of its coarse window (footprint plus one coarse cell around).
-struct Recipes {
-  std::vector<Term> terms;
-  std::vector<std::vector<std::vector<Recipe>>> ghosts, window;
-};
-
-// Quadratic Lagrange weights at offset xi (coarse cells) from the centre node of nodes -1, 0, 1.
-std::array<double, 3> quadratic(double xi) { return {0.5 * xi * (xi - 1), 1 - xi * xi, 0.5 * xi * (xi + 1)}; }
-
-}  // namespace
 
 struct CompositeMultigrid::Impl {
-  struct Tier {
-    GridShape shape;                        // the whole domain on this level
-    std::array<int, 3> nb{1, 1, 1};          // cells per patch
-    std::array<long long, 3> blocks{1, 1, 1};  // patches per direction if the level were full
-    std::vector<Level> patches;
-    std::vector<Cell> corner;
-    std::unordered_map<long long, int> find;
-    std::vector<std::vector<char>> covered;  // interior, per patch
-    std::vector<int> parent;                  // patch of tier - 1 holding the footprint
-    std::vector<std::vector<double>> ubar, corr, scratch;  // ghosted, ghosted, interior
-    std::vector<std::size_t> window_size;
-    std::vector<std::array<int, 3>> window_n;
-    // 2D line relaxation: the patches of each row (direction d) that follow each other without a
-    // gap form a run, relaxed as one Level so that lines cross patch boundaries.
-    struct Run {
-      std::vector<int> patches;  // in order along d
-      Level level;
-    };
-    std::array<std::vector<Run>, 2> runs;
-    // The split of the relaxation between the ranks: units (single patches for point smoothing,
-    // runs of direction d for lines) in contiguous chunks balanced by cells; after a pass the
-    // updated interiors are exchanged (MPI_Allgatherv), so every rank again holds the whole tier.
-    struct Split {
-      std::vector<std::vector<int>> units;  // patches of each unit
-      std::vector<std::size_t> first;       // first unit of each rank (nranks + 1 entries)
-      std::vector<int> counts, displs;      // doubles per rank
-    };
-    Split points;
-    std::array<Split, 2> lines;
-  };
-
   CompositeLayout layout;
   std::vector<Tier> tiers;
   Multigrid base;
@@ -214,114 +152,9 @@ struct CompositeMultigrid::Impl {
   }
   bool refined() const { return tiers.size() > 1; }
 
-  typename Tier::Split split(const Tier& T, std::vector<std::vector<int>> units) const {
-    typename Tier::Split S;
-    S.units = std::move(units);
-    std::vector<std::size_t> cells(S.units.size(), 0);
-    std::size_t total = 0;
-    for (std::size_t u = 0; u < S.units.size(); ++u) {
-      for (int p : S.units[u]) cells[u] += T.patches[static_cast<std::size_t>(p)].cells();
-      total += cells[u];
-    }
-    S.first.assign(static_cast<std::size_t>(nranks) + 1, S.units.size());
-    S.first[0] = 0;
-    std::size_t u = 0, done = 0;
-    for (int r = 1; r < nranks; ++r) {
-      const std::size_t target = total * static_cast<std::size_t>(r) / static_cast<std::size_t>(nranks);
-      while (u < S.units.size() && done + cells[u] / 2 < target) done += cells[u++];
-      S.first[static_cast<std::size_t>(r)] = u;
-    }
-    S.counts.assign(static_cast<std::size_t>(nranks), 0);
-    S.displs.assign(static_cast<std::size_t>(nranks), 0);
-    for (int r = 0; r < nranks; ++r) {
-      std::size_t n = 0;
-      for (std::size_t v = S.first[static_cast<std::size_t>(r)]; v < S.first[static_cast<std::size_t>(r) + 1]; ++v) n += cells[v];
-      S.counts[static_cast<std::size_t>(r)] = static_cast<int>(n);
-      if (r > 0) S.displs[static_cast<std::size_t>(r)] = S.displs[static_cast<std::size_t>(r) - 1] + S.counts[static_cast<std::size_t>(r) - 1];
-    }
-    return S;
-  }
-  // This rank's units of a split.
-  std::pair<std::size_t, std::size_t> mine(const typename Tier::Split& S) const {
-    return {S.first[static_cast<std::size_t>(rank)], S.first[static_cast<std::size_t>(rank) + 1]};
-  }
-  // After a pass: every rank receives the interiors its partners updated.
-  void exchange(Tier& T, const typename Tier::Split& S) {
-    if (nranks == 1) return;
-    std::vector<double> mine_buf, all(static_cast<std::size_t>(S.displs.back() + S.counts.back()));
-    const auto [u0, u1] = mine(S);
-    for (std::size_t u = u0; u < u1; ++u)
-      for (int p : S.units[u]) {
-        const Level& P = T.patches[static_cast<std::size_t>(p)];
-        for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { mine_buf.push_back(P.u[static_cast<std::size_t>(g)]); });
-      }
-    MPI_Allgatherv(mine_buf.data(), static_cast<int>(mine_buf.size()), MPI_DOUBLE, all.data(), S.counts.data(), S.displs.data(),
-                   MPI_DOUBLE, comm);
-    std::size_t at = 0;
-    for (const auto& unit : S.units)
-      for (int p : unit) {
-        Level& P = T.patches[static_cast<std::size_t>(p)];
-        for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { P.u[static_cast<std::size_t>(g)] = all[at++]; });
-      }
-  }
-
-  static void build_runs(Tier& T) {
-    for (int d = 0; d < 2; ++d) {
-      const int e = 1 - d;
-      std::map<std::pair<long long, long long>, int> order;  // (transverse, along) block -> patch
-      for (std::size_t p = 0; p < T.corner.size(); ++p)
-        order[{T.corner[p][e] / T.nb[e], T.corner[p][d] / T.nb[d]}] = static_cast<int>(p);
-      std::vector<int> run;
-      long long row = -1, last = -2;
-      auto close = [&] {
-        if (run.empty()) return;
-        GridShape s = T.patches[static_cast<std::size_t>(run.front())].shape;
-        s.n[d] = T.nb[d] * static_cast<int>(run.size());
-        s.boundary[d][1] = T.patches[static_cast<std::size_t>(run.back())].shape.boundary[d][1];
-        T.runs[static_cast<std::size_t>(d)].push_back({run, Level(s)});
-        run.clear();
-      };
-      for (const auto& [k, p] : order) {
-        if (k.first != row || k.second != last + 1) close();
-        row = k.first, last = k.second;
-        run.push_back(p);
-      }
-      close();
-    }
-  }
-
-  // Copies between a run and its patches: interior cells with the transverse ghosts, and the end
-  // ghosts of the run (to_run); interior cells only (from_run).
-  template <bool ToRun>
-  void copy_run(Tier& T, Tier::Run& R, int d, std::vector<double> Level::*array, bool ghosts) {
-    const int e = 1 - d;
-    Level& RL = R.level;
-    for (std::size_t m = 0; m < R.patches.size(); ++m) {
-      Level& P = T.patches[static_cast<std::size_t>(R.patches[m])];
-      const int n_d = P.shape.n[d], n_e = P.shape.n[e];
-      const int a0 = (ghosts && m == 0) ? -1 : 0, a1 = (ghosts && m + 1 == R.patches.size()) ? n_d + 1 : n_d;
-      const int b0 = ghosts ? -1 : 0, b1 = ghosts ? n_e + 1 : n_e;
-      for (int b = b0; b < b1; ++b)
-        for (int a = a0; a < a1; ++a) {
-          if ((a < 0 || a >= n_d) && (b < 0 || b >= n_e)) continue;  // corners
-          std::array<int, 2> pl{}, rl{};
-          pl[d] = a, pl[e] = b;
-          rl[d] = a + static_cast<int>(m) * n_d, rl[e] = b;
-          const bool interior = a >= 0 && a < n_d && b >= 0 && b < n_e;
-          if (ghosts || interior) {
-            if (array == &Level::u) {
-              double& x = P.u[static_cast<std::size_t>(P.at(pl[0], pl[1], 0))];
-              double& y = RL.u[static_cast<std::size_t>(RL.at(rl[0], rl[1], 0))];
-              if constexpr (ToRun) y = x; else x = y;
-            } else if (interior) {
-              double& x = (P.*array)[P.cell(pl[0], pl[1], 0)];
-              double& y = (RL.*array)[RL.cell(rl[0], rl[1], 0)];
-              if constexpr (ToRun) y = x; else x = y;
-            }
-          }
-        }
-    }
-  }
+  Tier::Split split(const Tier& T, std::vector<std::vector<int>> units) const { return make_split(T, std::move(units), nranks); }
+  std::pair<std::size_t, std::size_t> mine(const Tier::Split& S) const { return owned_units(S, rank); }
+  void exchange(Tier& T, const Tier::Split& S) { exchange_units(T, S, comm, rank, nranks); }
 
   static long long key(const Tier& T, const Cell& c) {
     return c[0] / T.nb[0] + T.blocks[0] * (c[1] / T.nb[1] + T.blocks[1] * (c[2] / T.nb[2]));
@@ -423,24 +256,6 @@ struct CompositeMultigrid::Impl {
         }
   }
 
-  // Appends one recipe, its equal references merged.
-  static void add_recipe(Recipes& R, std::vector<Recipe>& list, std::size_t target, std::vector<Term>& terms) {
-    std::sort(terms.begin(), terms.end(), [](const Term& a, const Term& b) {
-      return std::tie(a.kind, a.tier, a.patch, a.p, a.mask) < std::tie(b.kind, b.tier, b.patch, b.p, b.mask);
-    });
-    const std::size_t begin = R.terms.size();
-    for (const Term& x : terms) {
-      Term* last = R.terms.size() > begin ? &R.terms.back() : nullptr;
-      if (last && x.kind != Term::dirichlet && last->kind == x.kind && last->tier == x.tier && last->patch == x.patch &&
-          last->p == x.p && last->mask == x.mask)
-        last->w += x.w;
-      else
-        R.terms.push_back(x);
-    }
-    list.push_back({target, begin, R.terms.size()});
-    terms.clear();
-  }
-
   const Recipes& recipes_for(const ScalarEquation& eq) {
     const std::pair<double, bool> sig{eq.dirichlet ? 0.0 : eq.falloff, static_cast<bool>(eq.dirichlet)};
     auto it = recipes.find(sig);
@@ -484,33 +299,6 @@ struct CompositeMultigrid::Impl {
       }
     }
     return R;
-  }
-
-  // Parity factor of each crossing mask.
-  static std::array<double, 64> parity_factors(const ScalarEquation& eq) {
-    std::array<double, 64> f{};
-    for (unsigned m = 0; m < 64; ++m) {
-      double v = 1;
-      for (int b = 0; b < 6; ++b)
-        if (m & (1u << b)) v *= eq.parity[b / 2][b % 2];
-      f[m] = v;
-    }
-    return f;
-  }
-
-  // Value of a recipe over the arrays `field(tier, patch)` (ghosted); homogeneous: a correction
-  // (far and Dirichlet values zero).
-  template <class Field>
-  static double evaluate(const Recipes& R, const Recipe& r, const std::array<double, 64>& par, const ScalarEquation& eq,
-                         bool homogeneous, Field&& field) {
-    double v = 0;
-    for (std::size_t m = r.begin; m < r.end; ++m) {
-      const Term& x = R.terms[m];
-      const double w = par[x.mask] * x.w;
-      if (x.kind == Term::stored) v += w * field(x.tier, x.patch)[static_cast<std::size_t>(x.p)];
-      else if (!homogeneous) v += w * (x.kind == Term::far ? eq.far_value : eq.dirichlet(x.x));
-    }
-    return v;
   }
 
   // ---- equation set-up --------------------------------------------------------------------------
@@ -898,7 +686,7 @@ void CompositeMultigrid::fill_covered(CompositeField& f) const {
 CompositeField CompositeMultigrid::with_ghosts(const ScalarEquation& boundary, const CompositeField& u) {
   Impl& m = *impl_;
   if (!m.refined()) return {{m.base.with_ghosts(boundary, u.part.at(0))}};
-  const auto par = Impl::parity_factors(boundary);
+  const auto par = parity_factors(boundary);
   m.load(u, false);
   m.restrict_solution(boundary, par);
   CompositeField out;
@@ -916,7 +704,7 @@ SolveStats CompositeMultigrid::solve(const CompositeEquation& eq, CompositeField
   m.set_equation(eq);
   m.relaxed_finest = m.relaxed_all = 0;
   const ScalarEquation& bc = eq.boundary;
-  const auto par = Impl::parity_factors(bc);
+  const auto par = parity_factors(bc);
   SolveStats st;
   if (s.full_multigrid) {
     // Nested iteration: the base problem (fine coefficients restricted), then interpolated up.
@@ -969,7 +757,7 @@ double CompositeMultigrid::residual_norm(const CompositeEquation& eq, const Comp
   if (!m.refined()) return m.base.residual_norm(m.base_equation(eq), u.part.at(0));
   m.set_equation(eq);
   m.load(u, eq.nonlinear());
-  const auto par = Impl::parity_factors(eq.boundary);
+  const auto par = parity_factors(eq.boundary);
   m.restrict_solution(eq.boundary, par);
   return m.leaf_residual(eq.boundary, par).max;
 }

@@ -1,0 +1,96 @@
+#pragma once
+// One level ("tier") of the composite multigrid: its patches (Levels with one ghost layer), their
+// placement, covered cells and parents, the runs of patches relaxed as single 2D line Levels, and
+// the split of the relaxation between MPI ranks (units dealt out by cells, interiors exchanged
+// after each pass).
+#include <mpi.h>
+
+#include <array>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "level.hpp"
+#include "level_ops.hpp"
+
+namespace remnant::xcfc {
+
+using Cell = std::array<long long, 3>;
+
+struct Tier {
+  GridShape shape;                        // the whole domain on this level
+  std::array<int, 3> nb{1, 1, 1};          // cells per patch
+  std::array<long long, 3> blocks{1, 1, 1};  // patches per direction if the level were full
+  std::vector<Level> patches;
+  std::vector<Cell> corner;
+  std::unordered_map<long long, int> find;
+  std::vector<std::vector<char>> covered;  // interior, per patch
+  std::vector<int> parent;                  // patch of tier - 1 holding the footprint
+  std::vector<std::vector<double>> ubar, corr, scratch;  // ghosted, ghosted, interior
+  std::vector<std::size_t> window_size;
+  std::vector<std::array<int, 3>> window_n;
+  // 2D line relaxation: the patches of each row (direction d) that follow each other without a
+  // gap form a run, relaxed as one Level so that lines cross patch boundaries.
+  struct Run {
+    std::vector<int> patches;  // in order along d
+    Level level;
+  };
+  std::array<std::vector<Run>, 2> runs;
+  // The split of the relaxation between the ranks: units (single patches for point smoothing,
+  // runs of direction d for lines) in contiguous chunks balanced by cells; after a pass the
+  // updated interiors are exchanged (MPI_Allgatherv), so every rank again holds the whole tier.
+  struct Split {
+    std::vector<std::vector<int>> units;  // patches of each unit
+    std::vector<std::size_t> first;       // first unit of each rank (nranks + 1 entries)
+    std::vector<int> counts, displs;      // doubles per rank
+  };
+  Split points;
+  std::array<Split, 2> lines;
+};
+
+
+// Relaxation units dealt out to `nranks` ranks in contiguous chunks balanced by cells.
+Tier::Split make_split(const Tier& T, std::vector<std::vector<int>> units, int nranks);
+// This rank's units [first, last).
+inline std::pair<std::size_t, std::size_t> owned_units(const Tier::Split& S, int rank) {
+  return {S.first[static_cast<std::size_t>(rank)], S.first[static_cast<std::size_t>(rank) + 1]};
+}
+// After a pass: every rank receives the patch interiors its partners updated (MPI_Allgatherv).
+void exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank, int nranks);
+// The runs of both directions of a 2D tier.
+void build_runs(Tier& T);
+
+// Copies between a run and its patches: interior cells with the transverse ghosts and the run's end
+// ghosts (ToRun, ghosts); interior cells only (otherwise). `array` is Level::u (ghosted) or an
+// interior array.
+template <bool ToRun>
+void copy_run(Tier& T, Tier::Run& R, int d, std::vector<double> Level::*array, bool ghosts) {
+  const int e = 1 - d;
+  Level& RL = R.level;
+  for (std::size_t m = 0; m < R.patches.size(); ++m) {
+    Level& P = T.patches[static_cast<std::size_t>(R.patches[m])];
+    const int n_d = P.shape.n[d], n_e = P.shape.n[e];
+    const int a0 = (ghosts && m == 0) ? -1 : 0, a1 = (ghosts && m + 1 == R.patches.size()) ? n_d + 1 : n_d;
+    const int b0 = ghosts ? -1 : 0, b1 = ghosts ? n_e + 1 : n_e;
+    for (int b = b0; b < b1; ++b)
+      for (int a = a0; a < a1; ++a) {
+        if ((a < 0 || a >= n_d) && (b < 0 || b >= n_e)) continue;  // corners
+        std::array<int, 2> pl{}, rl{};
+        pl[d] = a, pl[e] = b;
+        rl[d] = a + static_cast<int>(m) * n_d, rl[e] = b;
+        const bool interior = a >= 0 && a < n_d && b >= 0 && b < n_e;
+        if (!ghosts && !interior) continue;
+        if (array == &Level::u) {
+          double& x = P.u[static_cast<std::size_t>(P.at(pl[0], pl[1], 0))];
+          double& y = RL.u[static_cast<std::size_t>(RL.at(rl[0], rl[1], 0))];
+          if constexpr (ToRun) y = x; else x = y;
+        } else if (interior) {
+          double& x = (P.*array)[P.cell(pl[0], pl[1], 0)];
+          double& y = (RL.*array)[RL.cell(rl[0], rl[1], 0)];
+          if constexpr (ToRun) y = x; else x = y;
+        }
+      }
+  }
+}
+
+}  // namespace remnant::xcfc
