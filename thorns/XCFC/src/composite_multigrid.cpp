@@ -20,6 +20,7 @@
 #include "boundary_ghosts.hpp"
 #include "composite_recipes.hpp"
 #include "composite_tier.hpp"
+#include "composite_transfers.hpp"
 #include "level.hpp"
 #include "level_ops.hpp"
 #include "line_relaxation.hpp"
@@ -181,16 +182,8 @@ struct CompositeMultigrid::Impl {
     return it == T.find.end() ? -1 : it->second;
   }
 
-  // Interior index, in the parent patch, of the coarse cell holding fine cell (i, j, k) of patch p.
   std::size_t coarse_cell(int t, std::size_t p, int i, int j, int k) const {
-    const Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
-    const Cell& F = T.corner[p];
-    const Cell& Pc = C.corner[static_cast<std::size_t>(T.parent[p])];
-    const std::array<int, 3> f{i, j, k};
-    std::array<int, 3> g{0, 0, 0};
-    for (int d = 0; d < 3; ++d)
-      if (used(d)) g[d] = static_cast<int>((F[d] + f[d]) / 2 - Pc[d]);
-    return C.patches[static_cast<std::size_t>(T.parent[p])].cell(g[0], g[1], g[2]);
+    return xcfc::coarse_cell(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)], p, i, j, k);
   }
   bool used(int d) const { return layout.base.used(d); }
 
@@ -309,72 +302,12 @@ struct CompositeMultigrid::Impl {
     for (std::size_t q = 0; q < L.k.size(); ++q) L.k[q] += mk[q];
   }
 
-  // Volume-weighted restriction of interior values of every patch of tier t into its parent's
-  // covered cells (interior arrays via accessors).
   template <class Fine, class Coarse>
   void restrict_tier(int t, Fine&& fine, Coarse&& coarse) const {
-    const Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
-    std::vector<double> sum, vol;
-    for (std::size_t p = 0; p < T.patches.size(); ++p) {
-      const Level& P = T.patches[p];
-      const Level& Q = C.patches[static_cast<std::size_t>(T.parent[p])];
-      sum.assign(Q.cells(), 0.0);
-      vol.assign(Q.cells(), 0.0);
-      for (int k = 0; k < P.shape.n[2]; ++k)
-        for (int j = 0; j < P.shape.n[1]; ++j)
-          for (int i = 0; i < P.shape.n[0]; ++i) {
-            const std::size_t q = P.cell(i, j, k), qc = coarse_cell(t, p, i, j, k);
-            sum[qc] += P.volume[q] * fine(p, q);
-            vol[qc] += P.volume[q];
-          }
-      for (std::size_t qc = 0; qc < Q.cells(); ++qc)
-        if (vol[qc] > 0) coarse(static_cast<std::size_t>(T.parent[p]), qc) = sum[qc] / vol[qc];
-    }
+    xcfc::restrict_tier(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)], fine, coarse);
   }
-
-  // The solution in the covered cells of tier t - 1 from the patches of tier t (ghosts filled): the
-  // children's mean minus (h^2 / 8) u_dd per direction, u_dd from the children's second differences.
-  // The composite discretisation reads covered values as point values (in the stencils of the
-  // neighbouring coarse leaf cells and in the fine ghosts' interpolation); a plain or volume-weighted
-  // mean would be off by O(H^2) there, an O(1) truncation error along the interface.
   void restrict_point_values(int t) {
-    Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
-    std::array<int, 3> half{1, 1, 1};
-    int dims = 0;
-    for (int d = 0; d < 3; ++d)
-      if (used(d)) half[d] = T.nb[d] / 2, ++dims;
-    const int children = 1 << dims;
-    for (std::size_t p = 0; p < T.patches.size(); ++p) {
-      const Level& P = T.patches[p];
-      Level& Q = C.patches[static_cast<std::size_t>(T.parent[p])];
-      const Cell& F = T.corner[p];
-      const Cell& Pc = C.corner[static_cast<std::size_t>(T.parent[p])];
-      const double* u = P.u.data();
-      for (int ck = 0; ck < half[2]; ++ck)
-        for (int cj = 0; cj < half[1]; ++cj)
-          for (int ci = 0; ci < half[0]; ++ci) {
-            const std::array<int, 3> c{ci, cj, ck};
-            std::array<int, 3> f0{0, 0, 0}, cc{0, 0, 0};
-            for (int d = 0; d < 3; ++d)
-              if (used(d)) f0[d] = 2 * c[d], cc[d] = static_cast<int>(F[d] / 2 - Pc[d]) + c[d];
-            const std::ptrdiff_t g0 = P.at(f0[0], f0[1], f0[2]);
-            double mean = 0, curvature = 0;
-            for (int b = 0; b < children; ++b) {
-              std::ptrdiff_t g = g0;
-              int bit = 0;
-              for (int d = 0; d < 3; ++d)
-                if (used(d)) g += ((b >> bit++) & 1) * P.st[d];
-              mean += u[g];
-              bit = 0;
-              for (int d = 0; d < 3; ++d) {
-                if (!used(d)) continue;
-                const std::ptrdiff_t sd = P.st[d];
-                if (((b >> bit++) & 1) == 0) curvature += 0.5 * (u[g + 2 * sd] - u[g + sd] - u[g] + u[g - sd]);
-              }
-            }
-            Q.u[static_cast<std::size_t>(Q.at(cc[0], cc[1], cc[2]))] = mean / children - curvature / (8.0 * (children / 2));
-          }
-    }
+    xcfc::restrict_point_values(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)]);
   }
 
   void set_equation(const CompositeEquation& eq) {
