@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -20,9 +21,14 @@ StarDiagnostics star_diagnostics(Context& ctx) {
     for_interior(*b, [&](int i, int j, int k) {
       const Point3 X = coords::to_cartesian(b->coordinates, {b->centroid(0, i), b->centroid(1, j), b->centroid(2, k)});
       const double r = std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
+      // Ties (the cells around the origin of a 3D grid, equal up to round-off) take the largest
+      // value, so that the result does not depend on which rank holds which of them.
       if (r < r_min) {
         r_min = r;
         centre[0] = rho(i, j, k), centre[1] = alpha(i, j, k), centre[2] = psi(i, j, k);
+      } else if (r == r_min) {
+        centre[0] = std::max(centre[0], rho(i, j, k)), centre[1] = std::max(centre[1], alpha(i, j, k));
+        centre[2] = std::max(centre[2], psi(i, j, k));
       }
       maxima[0] = std::max(maxima[0], rho(i, j, k));
       maxima[1] = std::max(maxima[1], -alpha(i, j, k));
@@ -32,7 +38,7 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   MPI_Comm comm = ctx.grid().comm();
   double r_global;
   MPI_Allreduce(&r_min, &r_global, 1, MPI_DOUBLE, MPI_MIN, comm);
-  // The rank(s) holding the nearest cell contribute its values (ties are mirror cells: equal values).
+  // The rank(s) holding the nearest cells contribute their values (the largest of ties).
   double mine[3];
   for (int c = 0; c < 3; ++c) mine[c] = r_min == r_global ? centre[c] : -inf;
   double cg[3], mg[3];

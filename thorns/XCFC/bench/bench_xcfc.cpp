@@ -15,16 +15,19 @@ namespace {
 using namespace remnant;
 using namespace remnant::xcfc;
 
+// 1D: the BU0-dyn grid; 2D: the migration grid; 3D: spherical 128 x 16 x 32 over the same r and
+// theta ranges, phi periodic.
 GridShape grid(int dim) {
   GridShape s;
   s.coordinates = CoordinateSystem::spherical;
   s.dimension = dim;
-  s.n = {640, dim == 2 ? 32 : 1, 1};
+  s.n = dim == 3 ? std::array<int, 3>{128, 16, 32} : std::array<int, 3>{640, dim == 2 ? 32 : 1, 1};
   s.lo = {0, 0, 0};
-  s.dx = {60.0 / 640, (dim == 2 ? 1.5707963267948966 : 3.141592653589793) / s.n[1], 6.283185307179586};
+  s.dx = {60.0 / s.n[0], (dim >= 2 ? 1.5707963267948966 : 3.141592653589793) / s.n[1], 6.283185307179586 / s.n[2]};
+  const Boundary phi = dim == 3 ? Boundary::periodic : Boundary::outer;
   s.boundary = {{{Boundary::origin, Boundary::outer},
-                 {Boundary::axis, dim == 2 ? Boundary::reflect : Boundary::axis},
-                 {Boundary::outer, Boundary::outer}}};
+                 {Boundary::axis, dim >= 2 ? Boundary::reflect : Boundary::axis},
+                 {phi, phi}}};
   return s;
 }
 
@@ -38,13 +41,14 @@ struct Star {
     E.part.assign(1, std::vector<double>(s.cells())), p = E;
     for (auto& c : S) c.part.assign(1, std::vector<double>(s.cells(), 0.0));
     std::size_t q = 0;
-    for (int j = 0; j < s.n[1]; ++j)
-      for (int i = 0; i < s.n[0]; ++i, ++q) {
-        const tov::TovPoint t = star.at(s.centre(0, i));
-        E.part[0][q] = std::pow(t.psi, 6) * t.rho * (1 + t.eps);
-        p.part[0][q] = t.press;
-        S[0].part[0][q] = 1e-8 * E.part[0][q] * std::sin(0.3 * s.centre(0, i));  // a small radial momentum
-      }
+    for (int k = 0; k < s.n[2]; ++k)
+      for (int j = 0; j < s.n[1]; ++j)
+        for (int i = 0; i < s.n[0]; ++i, ++q) {
+          const tov::TovPoint t = star.at(s.centre(0, i));
+          E.part[0][q] = std::pow(t.psi, 6) * t.rho * (1 + t.eps);
+          p.part[0][q] = t.press;
+          S[0].part[0][q] = 1e-8 * E.part[0][q] * std::sin(0.3 * s.centre(0, i));  // a small radial momentum
+        }
   }
 };
 
@@ -135,7 +139,7 @@ void BM_VCycle(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_VCycle)->Args({1, 0})->Args({1, 1})->Args({2, 0})->Args({2, 1})->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_ColdSolve)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_WarmSolve)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_VCycle)->Args({1, 0})->Args({1, 1})->Args({2, 0})->Args({2, 1})->Args({3, 0})->Args({3, 1})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ColdSolve)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WarmSolve)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -53,6 +53,12 @@ struct CompositeMultigrid::Impl {
     }
     const GridShape& b = l.base;
     const int L = l.finest();
+    // Patches relax by points, which stall next to the axis of a 3D curvilinear grid (the base
+    // level needs cyclic phi lines and shell planes), and a patch's phi lines do not close.
+    if (L > 0 && b.dimension == 3 && b.coordinates != CoordinateSystem::cartesian)
+      throw std::invalid_argument(
+          "CompositeMultigrid: refined 3D cylindrical and spherical grids are not supported (uniform 3D grids are; "
+          "refined grids in 1D, 2D and 3D Cartesian)");
     if (L > 0)
       for (int d = 0; d < b.dimension; ++d)
         if (l.patch_cells[d] < 2 || l.patch_cells[d] % 2 != 0 || b.n[d] % l.patch_cells[d] != 0)
@@ -167,8 +173,9 @@ struct CompositeMultigrid::Impl {
     for (int d = 0; d < s.dimension; ++d) {
       s.n[d] = T.nb[d];
       s.lo[d] = T.shape.lo[d] + static_cast<double>(c[d]) * T.shape.dx[d];
-      if (c[d] > 0) s.boundary[d][0] = Boundary::interface;
-      if (c[d] + T.nb[d] < T.shape.n[d]) s.boundary[d][1] = Boundary::interface;
+      // A periodic face's neighbour is across the wrap: interface too (the recipes wrap).
+      if (c[d] > 0 || s.boundary[d][0] == Boundary::periodic) s.boundary[d][0] = Boundary::interface;
+      if (c[d] + T.nb[d] < T.shape.n[d] || s.boundary[d][1] == Boundary::periodic) s.boundary[d][1] = Boundary::interface;
     }
     return s;
   }
@@ -215,9 +222,9 @@ struct CompositeMultigrid::Impl {
         out.push_back(f);
         return expand(t, in, w * rho, mask, falloff, dirichlet, out);
       }
-      I[d] = side == 0 ? -1 - I[d] : 2 * static_cast<long long>(s.n[d]) - 1 - I[d];
-      if (kind == Boundary::origin && s.used(1) && s.origin_flips_theta()) I[1] = s.n[1] - 1 - I[1];
-      return expand(t, I, w, mask ^ (1u << (2 * d + side)), falloff, dirichlet, out);
+      // Periodic images keep the parity mask (their parity is +1 for every field anyway).
+      const unsigned crossed = kind == Boundary::periodic ? 0u : 1u << (2 * d + side);
+      return expand(t, s.image(I, d, side), w, mask ^ crossed, falloff, dirichlet, out);
     }
     const int p = locate(t, I);
     if (p >= 0) {

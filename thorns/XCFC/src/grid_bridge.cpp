@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <set>
 
 namespace remnant::xcfc {
@@ -20,12 +21,19 @@ CompositeLayout layout_of_grid(const Context& ctx) {
   const auto& hi = ctx.param<std::vector<double>>("Grid", "xmax");
   const auto& bl = ctx.param<std::vector<std::string>>("Grid", "boundary_lower");
   const auto& bu = ctx.param<std::vector<std::string>>("Grid", "boundary_upper");
-  auto kind = [](const std::string& k) {
+  // Periodic is phi of a 3D cylindrical or spherical grid only: elsewhere there is no far field.
+  auto kind = [&](const std::string& k, int d) {
     if (k == "outflow") return Boundary::outer;
     if (k == "reflect") return Boundary::reflect;
     if (k == "axis") return Boundary::axis;
     if (k == "origin") return Boundary::origin;
-    throw RunError("XCFC: Grid boundary '" + k + "' is not supported by the elliptic solver (periodic domains have no far field)");
+    const auto u = static_cast<std::size_t>(d);
+    if (k == "periodic" && d == 2 && s.coordinates != CoordinateSystem::cartesian &&
+        std::abs(hi[u] - lo[u] - 2 * std::numbers::pi) < 1e-12)
+      return Boundary::periodic;
+    throw RunError("XCFC: Grid boundary '" + k + "' in direction " + std::to_string(d) +
+                   " is not supported by the elliptic solver (allowed: outflow, reflect, axis, origin; periodic only "
+                   "for phi over [0, 2 pi] of a 3D cylindrical or spherical grid: other periodic domains have no far field)");
   };
   for (int d = 0; d < 3; ++d) {
     const auto u = static_cast<std::size_t>(d);
@@ -33,7 +41,7 @@ CompositeLayout layout_of_grid(const Context& ctx) {
       s.n[d] = static_cast<int>(n[u]);
       s.lo[d] = lo[u];
       s.dx[d] = (hi[u] - lo[u]) / s.n[d];
-      s.boundary[d] = {kind(bl[u]), kind(bu[u])};
+      s.boundary[d] = {kind(bl[u], d), kind(bu[u], d)};
       lay.patch_cells[d] = static_cast<int>(nb[u]);
     } else {
       s.n[d] = 1;
@@ -57,6 +65,9 @@ CompositeLayout layout_of_grid(const Context& ctx) {
       lay.patches.back().push_back({static_cast<int>(b[0] * lay.patch_cells[0]), static_cast<int>(b[1] * lay.patch_cells[1]),
                                     static_cast<int>(b[2] * lay.patch_cells[2])});
   }
+  if (!lay.patches.empty() && s.dimension == 3 && s.coordinates != CoordinateSystem::cartesian)
+    throw RunError("XCFC: refined 3D cylindrical and spherical grids are not supported by the elliptic solver yet "
+                   "(Grid::max_level or Grid::regions refine this grid); use a uniform 3D grid, or 2D, or 3D Cartesian");
   return lay;
 }
 

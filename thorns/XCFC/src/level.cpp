@@ -21,18 +21,14 @@ double transverse_integral(const GridShape& s, int d, int e, int i) {
   const double a = s.face(e, i), b = s.face(e, i + 1);
   const CoordinateSystem cs = s.coordinates;
   if (cs == CoordinateSystem::spherical && e == 0 && d >= 1) return b - a;  // int r^2 / r^2 dr
-  const bool cyl_phi = cs == CoordinateSystem::cylindrical && d == 2 && e == 0;  // int R / R^2 dR
-  const bool sph_phi = cs == CoordinateSystem::spherical && d == 2 && e == 1;    // int sin / sin^2
-  if (cyl_phi) {
-    if (a > 0) return std::log(b / a);
-    const double c = coords::centroid(cs, e, a, b);
-    return weight(s, e, i) / (c * c);
-  }
-  if (sph_phi) {
-    if (a > 0 && b < std::numbers::pi) return std::log(std::tan(0.5 * b) / std::tan(0.5 * a));
-    const double sc = std::sin(coords::centroid(cs, e, a, b));
-    return weight(s, e, i) / (sc * sc);
-  }
+  // Phi faces: int R / R^2 dR and int sin / sin^2 dtheta diverge at the axis, and only fields that
+  // vary in phi cross them, which vanish there like varpi^m (m >= 1). The midpoint form
+  // (b - a) / x_centre makes the flux exact for m = 1 and 2 with the cell value at the centre
+  // (the log integrals are exact only for m = 0, and the centroid form is off by O(1) at the axis).
+  const bool cyl_phi = cs == CoordinateSystem::cylindrical && d == 2 && e == 0;
+  const bool sph_phi = cs == CoordinateSystem::spherical && d == 2 && e == 1;
+  if (cyl_phi) return (b - a) / s.centre(e, i);
+  if (sph_phi) return (b - a) / std::sin(s.centre(e, i));
   return weight(s, e, i);
 }
 
@@ -113,8 +109,8 @@ Level::Level(const GridShape& s) : shape(s) {
           m[d] = side == 0 ? 0 : s.n[d] - 1;
           gf.ghost.push_back(at(gi[0], gi[1], gi[2]));
           gf.inner.push_back(at(m[0], m[1], m[2]));
-          if (s.boundary[d][side] == Boundary::origin && s.used(1) && s.origin_flips_theta()) m[1] = s.n[1] - 1 - m[1];
-          gf.mirror.push_back(at(m[0], m[1], m[2]));
+          const auto im = s.image({gi[0], gi[1], gi[2]}, d, side);
+          gf.mirror.push_back(at(static_cast<int>(im[0]), static_cast<int>(im[1]), static_cast<int>(im[2])));
         }
       if (s.boundary[d][side] != Boundary::outer) continue;
       auto &f1 = robin1[d][side], &f2 = robin2[d][side];

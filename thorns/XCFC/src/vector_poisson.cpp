@@ -32,17 +32,23 @@ ScalarEquation cartesian_component_equation(const GridShape& s, int a) {
       double p = 1;
       switch (s.boundary[d][side]) {
         case Boundary::outer:
+        case Boundary::periodic:
         case Boundary::interface: break;
         case Boundary::reflect:
           // Cartesian planes flip the normal component; the spherical equator and the cylindrical
           // z = 0 plane flip z.
           p = (s.coordinates == CoordinateSystem::cartesian ? a == d : a == 2) ? -1 : 1;
           break;
-        case Boundary::axis:  // the mirror point lies at phi + pi: x and y flip
-          p = a < 2 ? -1 : 1;
+        // On 3D grids the image across the axis or the origin is the physical point itself (phi
+        // turned by pi): Cartesian components are continuous there, only the equatorial mirror
+        // (theta kept at the origin) flips z. In 2D the image lies in the same meridional
+        // half-plane, i.e. the point at phi + pi seen from phi: x and y flip.
+        case Boundary::axis:
+          p = a < 2 && !s.turns_phi() ? -1 : 1;
           break;
         case Boundary::origin:  // point reflection (with the equatorial mirror where theta is kept)
-          p = s.dimension == 1 ? -1 : (a < 2 || !s.origin_flips_theta()) ? -1 : 1;
+          if (s.turns_phi()) p = a == 2 && !s.origin_flips_theta() ? -1 : 1;
+          else p = s.dimension == 1 ? -1 : (a < 2 || !s.origin_flips_theta()) ? -1 : 1;
           break;
       }
       eq.parity[d][side] = p;

@@ -25,7 +25,9 @@ Range WorkPartition::range(std::size_t l) const {
 }
 
 bool WorkPartition::splittable(const GridShape& s) const {
-  if (nranks_ < 2 || s.dimension < 2) return false;
+  // 3D cylindrical and spherical levels are computed whole by every rank: their periodic and
+  // axis images (phi + pi) lie on other ranks' slabs.
+  if (nranks_ < 2 || s.dimension < 2 || s.turns_phi() || s.boundary[2][0] == Boundary::periodic) return false;
   return s.n[s.dimension - 1] >= 2 * nranks_ && s.n[0] >= nranks_ && s.cells() >= kMinCells;
 }
 // The leading splittable levels are distributed. The coarsest of them is split as evenly as

@@ -83,6 +83,12 @@ inline std::vector<Case> all_cases() {
                 {1.0, 0.3, {0.5, 0.5, 0.5}, {0, 0, 0}}});
   cs.push_back({"spherical 2D", make_shape(C::spherical, 2, {16, 8, 1}, {0, 0, 0}, {5, pi / 2, 2 * pi}, {{{B::origin, outer}, {B::axis, refl}, {outer, outer}}}),
                 {1.0, 0.3, {0.5, 0.5, 0.8}, {0, 0, 0}}});
+  // 3D: phi periodic and turned by pi across the axis and the origin; off-axis bumps (no symmetry
+  // about the z axis) so that phi matters.
+  cs.push_back({"cylindrical 3D", make_shape(C::cylindrical, 3, {8, 8, 8}, {0, 0, 0}, {4, 4, 2 * pi}, {{{B::axis, outer}, {refl, outer}, {B::periodic, B::periodic}}}),
+                {1.0, 0.3, {0.6, 0.5, 0.4}, {0.5, -0.4, 0}}});
+  cs.push_back({"spherical 3D", make_shape(C::spherical, 3, {8, 8, 8}, {0, 0, 0}, {5, pi, 2 * pi}, {{{B::origin, outer}, {B::axis, B::axis}, {B::periodic, B::periodic}}}),
+                {1.0, 0.3, {0.5, 0.6, 0.7}, {0.4, -0.3, 0.2}}});
   // Cartesian problems of lower dimension do not depend on the unused Cartesian coordinates.
   for (auto& c : cs)
     if (c.shape.coordinates == C::cartesian)

@@ -1,6 +1,7 @@
 // The metric of a TOV star from the xCFC solver given the star's matter (densitised E~ = psi^6 E as
 // a hand-off would import it, S~ = 3 psi^6 p with the solver's psi) against the exact isotropic TOV
-// solution (thorns/TOV): second-order convergence of psi and alpha, 1D and 2D spherical.
+// solution (thorns/TOV): second-order convergence of psi and alpha, 1D/2D/3D spherical, 2D/3D
+// cylindrical, and refined grids.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -105,6 +106,18 @@ GridShape cylindrical_2d() {
   return make_shape(CoordinateSystem::cylindrical, 2, {32, 32, 1}, {0, 0, 0}, {16, 16, 6.283185307179586},
                     {{{B::axis, B::outer}, {B::reflect, B::outer}, {B::outer, B::outer}}});
 }
+// 3D: phi periodic (the star is the same in every phi; the grid's phi couplings and axis images
+// still enter every cell's operator and ghost).
+GridShape spherical_3d() {
+  using B = Boundary;
+  return make_shape(CoordinateSystem::spherical, 3, {80, 4, 4}, {0, 0, 0}, {20, 1.5707963267948966, 6.283185307179586},
+                    {{{B::origin, B::outer}, {B::axis, B::reflect}, {B::periodic, B::periodic}}});
+}
+GridShape cylindrical_3d() {
+  using B = Boundary;
+  return make_shape(CoordinateSystem::cylindrical, 3, {32, 32, 4}, {0, 0, 0}, {16, 16, 6.283185307179586},
+                    {{{B::axis, B::outer}, {B::reflect, B::outer}, {B::periodic, B::periodic}}});
+}
 Box box(double r0, double r1, double t0, double t1) { return {{{r0, r1}, {t0, t1}, {0, 7}}}; }
 
 }  // namespace
@@ -112,6 +125,8 @@ Box box(double r0, double r1, double t0, double t1) { return {{{r0, r1}, {t0, t1
 TEST(XCFCTovMetric, Spherical1D) { expect_second_order("spherical 1D", spherical_1d()); }
 TEST(XCFCTovMetric, Spherical2D) { expect_second_order("spherical 2D", spherical_2d()); }
 TEST(XCFCTovMetric, Cylindrical2D) { expect_second_order("cylindrical 2D", cylindrical_2d()); }
+TEST(XCFCTovMetric, Spherical3D) { expect_second_order("spherical 3D", spherical_3d()); }
+TEST(XCFCTovMetric, Cylindrical3D) { expect_second_order("cylindrical 3D", cylindrical_3d()); }
 
 // The same stars on refined grids (composite solves): the interfaces cross the star (isotropic
 // radius 6.5), where psi and alpha vary most.

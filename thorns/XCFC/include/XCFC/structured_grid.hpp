@@ -15,6 +15,7 @@ enum class Boundary {
   reflect,  // symmetry plane (Cartesian planes, the spherical equator theta = pi/2)
   axis,     // cylindrical R = 0, spherical theta = 0 or pi
   origin,   // spherical r = 0
+  periodic, // phi of a 3D cylindrical or spherical grid (the full 2 pi)
   interface // a refined patch's face inside the domain: its ghosts are filled by the composite
             // solver (neighbour patches, coarse-fine interpolation) and held by the smoothers
 };
@@ -37,6 +38,14 @@ struct GridShape {
   // Point reflection through the spherical origin maps theta to pi - theta unless the domain ends
   // at the equator with a reflection (then the mirror cell has the same theta index).
   bool origin_flips_theta() const;
+  // The cell whose value (times the field's parity at that face) the ghost I beyond the face
+  // (d, side) takes: the mirror cell across a symmetry face, with theta flipped through the origin
+  // and, on 3D grids, phi turned by pi across the axis or the origin; periodic faces wrap. I may lie
+  // beyond other faces too (those coordinates are kept).
+  std::array<long long, 3> image(std::array<long long, 3> I, int d, int side) const;
+  // Whether phi is turned by pi across an axis or the origin (3D curvilinear grids): their phi
+  // levels must keep an even cell count.
+  bool turns_phi() const;
 };
 
 // Parity of a field at each symmetry face: +1 even, -1 odd. Outer faces ignore it.
