@@ -34,6 +34,7 @@ struct Level {
   std::vector<double> restrict_volume;            // sum of the fine volumes restricted into each cell
   std::vector<double> line_di, line_rhs;  // line-relaxation work (longest line)
   std::vector<double> line_scratch;       // 3D line relaxation: six arrays of the longest line
+  std::vector<double> line_z, line_cyclic;  // 3D cyclic phi lines of linear equations (factors)
   std::vector<double> shell_scratch;      // inner-shell plane relaxation work
   std::vector<double> dft_cos, dft_sin;   // its DFT table along phi, [m][k]
   // Line relaxation (1D and 2D): the line end ghost is c0 + c1 * u_end with c1 from the

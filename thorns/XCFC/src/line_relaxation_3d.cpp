@@ -1,6 +1,8 @@
 #include "line_relaxation_3d.hpp"
 
+#include <array>
 #include <cmath>
+#include <utility>
 
 #include "level_ops.hpp"
 
@@ -47,10 +49,149 @@ double end_factor(const Level& L, const ScalarEquation& eq, int d, int side, std
   }
 }
 
+// Line geometry along d: the transverse directions, strides and the cyclic flag.
+struct Lines3 {
+  int d, e1, e2, n;
+  std::ptrdiff_t pd, pe1, pe2;
+  std::size_t qd;
+  bool cyclic;
+  Lines3(const Level& L, int dir) : d(dir), e1((dir + 1) % 3), e2((dir + 2) % 3), n(L.shape.n[dir]) {
+    const GridShape& s = L.shape;
+    pd = L.st[d], pe1 = L.st[e1], pe2 = L.st[e2];
+    qd = d == 0 ? 1 : d == 1 ? static_cast<std::size_t>(s.n[0]) : static_cast<std::size_t>(s.n[0]) * s.n[1];
+    cyclic = s.boundary[d][0] == Boundary::periodic && n >= 3;
+  }
+  // The first cell of line (t1, t2): interior and ghosted offsets.
+  std::pair<std::size_t, std::ptrdiff_t> start(const Level& L, int t1, int t2) const {
+    std::array<int, 3> ijk{};
+    ijk[e1] = t1, ijk[e2] = t2;
+    return {L.cell(ijk[0], ijk[1], ijk[2]), L.at(ijk[0], ijk[1], ijk[2])};
+  }
+  std::size_t face(const Level& L, int t1, int t2) const {
+    return static_cast<std::size_t>(t1) + static_cast<std::size_t>(L.shape.n[e1]) * static_cast<std::size_t>(t2);
+  }
+  std::size_t line(const Level& L, int t1, int t2) const { return face(L, t1, t2); }
+};
+
+// Linear equations: the line matrices are fixed, so their elimination is done once per solve and
+// a pass is substitutions only (as in 2D). Cyclic lines keep the corrected tridiagonal part's
+// factors, its solution z for the corner vector and, per line, beta/gamma and the denominator.
+void factor_line(Level& L, const Lines3& ln, std::size_t q0, std::size_t line, std::size_t face, const ScalarEquation& eq) {
+  const int n = ln.n;
+  const Ops o(L);
+  double* w = L.line_w[ln.d].data();
+  double* inv = L.line_inv[ln.d].data();
+  const double *alo = o.lo[ln.d], *ahi = o.hi[ln.d];
+  auto q_of = [&](int m) { return q0 + static_cast<std::size_t>(m) * ln.qd; };
+  auto diag = [&](int m) { return -o.diag[q_of(m)] - o.k[q_of(m)]; };
+  double b0 = diag(0), bn = diag(n - 1), gamma = 0, alpha = 0, beta = 0;
+  if (ln.cyclic) {
+    gamma = -b0, beta = alo[q_of(0)], alpha = ahi[q_of(n - 1)];
+    b0 -= gamma;
+    bn -= alpha * beta / gamma;
+  } else {
+    const double c1lo = end_factor(L, eq, ln.d, 0, face), c1hi = end_factor(L, eq, ln.d, 1, face);
+    L.end_c1[ln.d][0][line] = c1lo, L.end_c1[ln.d][1][line] = c1hi;
+    b0 += alo[q_of(0)] * c1lo;
+    bn += ahi[q_of(n - 1)] * c1hi;
+  }
+  double prev_inv = 0, prev_up = 0;
+  for (int m = 0; m < n; ++m) {
+    const std::size_t q = q_of(m);
+    double b = m == 0 ? b0 : m == n - 1 ? bn : diag(m);
+    if (n == 1) b = b0 + (bn - diag(0));
+    const double wm = m == 0 ? 0.0 : alo[q] * prev_inv;
+    b -= wm * prev_up;
+    w[q] = wm, inv[q] = prev_inv = 1.0 / b, prev_up = ahi[q];
+  }
+  if (!ln.cyclic) return;
+  // z = T'^-1 (gamma, 0, ..., 0, alpha) with the factors just made.
+  double* z = L.line_z.data();
+  double r = 0;
+  for (int m = 0; m < n; ++m) {
+    const std::size_t q = q_of(m);
+    const double rhs = m == 0 ? gamma : m == n - 1 ? alpha : 0.0;
+    r = rhs - w[q] * r;
+    z[q] = r;
+  }
+  double x = 0;
+  for (int m = n - 1; m >= 0; --m) {
+    const std::size_t q = q_of(m);
+    x = (z[q] - ahi[q] * (m == n - 1 ? 0.0 : x)) * inv[q];
+    z[q] = x;
+  }
+  L.line_cyclic[2 * line] = beta / gamma;
+  L.line_cyclic[2 * line + 1] = 1.0 + z[q_of(0)] + beta / gamma * z[q_of(n - 1)];
+}
+
+// One colour of a linear equation's lines with the factors of factor_lines_3d.
+long long factored_pass(Level& L, const Lines3& ln, int colour) {
+  const GridShape& s = L.shape;
+  const Ops o(L);
+  double* u = L.u.data();
+  const int n = ln.n;
+  const double *alo = o.lo[ln.d], *ahi = o.hi[ln.d], *lo1 = o.lo[ln.e1], *hi1 = o.hi[ln.e1], *lo2 = o.lo[ln.e2],
+               *hi2 = o.hi[ln.e2];
+  const double *w = L.line_w[ln.d].data(), *inv = L.line_inv[ln.d].data();
+  const double* z = ln.cyclic ? L.line_z.data() : nullptr;
+  const double *c1lo = L.end_c1[ln.d][0].data(), *c1hi = L.end_c1[ln.d][1].data();
+  L.line_scratch.resize(static_cast<std::size_t>(n));
+  double* r = L.line_scratch.data();
+  long long cells = 0;
+  for (int t2 = 0; t2 < s.n[ln.e2]; ++t2)
+    for (int t1 = 0; t1 < s.n[ln.e1]; ++t1) {
+      if (((t1 + t2) & 1) != colour) continue;
+      const auto [q0, p0] = ln.start(L, t1, t2);
+      const std::size_t line = ln.line(L, t1, t2);
+      double prev = 0;
+      for (int m = 0; m < n; ++m) {
+        const std::size_t q = q0 + static_cast<std::size_t>(m) * ln.qd;
+        const std::ptrdiff_t p = p0 + m * ln.pd;
+        double rhs = o.f[q] + o.s0[q] - (lo1[q] * u[p - ln.pe1] + hi1[q] * u[p + ln.pe1] + lo2[q] * u[p - ln.pe2] + hi2[q] * u[p + ln.pe2]);
+        // Non-cyclic ends: the ghost's part that does not follow the end cell, c0 = ghost - c1 u.
+        if (!ln.cyclic && m == 0) rhs -= alo[q] * (u[p - ln.pd] - c1lo[line] * u[p]);
+        if (!ln.cyclic && m == n - 1) rhs -= ahi[q] * (u[p + ln.pd] - c1hi[line] * u[p]);
+        prev = rhs - w[q] * prev;
+        r[m] = prev;
+      }
+      double x = 0;
+      for (int m = n - 1; m >= 0; --m) {
+        const std::size_t q = q0 + static_cast<std::size_t>(m) * ln.qd;
+        x = (r[m] - (m == n - 1 ? 0.0 : ahi[q] * x)) * inv[q];
+        r[m] = x;
+      }
+      if (ln.cyclic) {
+        const double fact = (r[0] + L.line_cyclic[2 * line] * r[n - 1]) / L.line_cyclic[2 * line + 1];
+        for (int m = 0; m < n; ++m) r[m] -= fact * z[q0 + static_cast<std::size_t>(m) * ln.qd];
+      }
+      for (int m = 0; m < n; ++m) u[p0 + m * ln.pd] = r[m];
+      cells += n;
+    }
+  return cells;
+}
+
 }  // namespace
+
+void factor_lines_3d(Level& L, const ScalarEquation& eq) {
+  const GridShape& s = L.shape;
+  L.factored = false;
+  if (s.dimension != 3 || !L.s1.empty() || !L.s7.empty()) return;
+  const std::size_t nc = L.cells();
+  for (int d = 0; d < 3; ++d) {
+    const Lines3 ln(L, d);
+    L.line_w[d].resize(nc), L.line_inv[d].resize(nc);
+    for (auto& c : L.end_c1[d]) c.assign(nc / static_cast<std::size_t>(ln.n), 0.0);
+    if (ln.cyclic) L.line_z.resize(nc), L.line_cyclic.resize(2 * nc / static_cast<std::size_t>(ln.n));
+    for (int t2 = 0; t2 < s.n[ln.e2]; ++t2)
+      for (int t1 = 0; t1 < s.n[ln.e1]; ++t1)
+        factor_line(L, ln, ln.start(L, t1, t2).first, ln.line(L, t1, t2), ln.face(L, t1, t2), eq);
+  }
+  L.factored = true;
+}
 
 long long line_pass_3d(Level& L, const ScalarEquation& eq, int d, int colour) {
   const GridShape& s = L.shape;
+  if (L.factored) return factored_pass(L, Lines3(L, d), colour);
   const int e1 = (d + 1) % 3, e2 = (d + 2) % 3, n = s.n[d];
   const Ops o(L);
   double* u = L.u.data();

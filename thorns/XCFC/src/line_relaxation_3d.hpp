@@ -13,4 +13,8 @@ namespace remnant::xcfc {
 // Returns the number of cells relaxed.
 long long line_pass_3d(Level& L, const ScalarEquation& eq, int d, int colour);
 
+// Linear equations (no s1, s7): the Thomas factors of every line, kept on the level for the
+// passes of one solve (sets L.factored; nonlinear equations are linearised per pass instead).
+void factor_lines_3d(Level& L, const ScalarEquation& eq);
+
 }  // namespace remnant::xcfc

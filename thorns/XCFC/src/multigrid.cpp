@@ -370,7 +370,8 @@ struct Multigrid::Impl {
     }
     for (auto& L : levels) {
       set_line_ends(L, eq);
-      factor_lines(L);
+      if (L.shape.dimension == 3 && L.shape.coordinates != CoordinateSystem::cartesian) factor_lines_3d(L, eq);
+      else factor_lines(L);
     }
     coarse_ready = true;
   }
