@@ -66,29 +66,31 @@ void count(benchmark::State& state, const XcfcStats& s) {
   state.counters["Vcycles_beta"] = s.beta.cycles();
 }
 
-void BM_ColdSolve(benchmark::State& state) {
-  const GridShape s = grid(static_cast<int>(state.range(0)));
-  XcfcSolver sv(s);
-  const Star m(s);
+// The star on the grid of a dimension, its solver and the settings of a cold (initial) solve.
+struct Problem {
+  GridShape s;
+  XcfcSolver sv;
+  Star m;
   SolveSettings set;
-  set.tolerance = 1e-10;
-  set.full_multigrid = true;
   XcfcStats stats;
+  explicit Problem(int dim) : s(grid(dim)), sv(s), m(s) {
+    set.tolerance = 1e-10;
+    set.full_multigrid = true;
+  }
+};
+
+void BM_ColdSolve(benchmark::State& state) {
+  Problem P(static_cast<int>(state.range(0)));
   for (auto _ : state) {
     XcfcState st;
-    solve_all(sv, m, st, set, stats);
+    solve_all(P.sv, P.m, st, P.set, P.stats);
   }
-  count(state, stats);
+  count(state, P.stats);
 }
 
 void BM_WarmSolve(benchmark::State& state) {
-  const GridShape s = grid(static_cast<int>(state.range(0)));
-  XcfcSolver sv(s);
-  Star m(s);
-  SolveSettings set;
-  set.tolerance = 1e-10;
-  set.full_multigrid = true;
-  XcfcStats stats;
+  Problem P(static_cast<int>(state.range(0)));
+  auto& [s, sv, m, set, stats] = P;
   XcfcState base;
   solve_all(sv, m, base, set, stats);
   set.tolerance = 1e-6;
@@ -109,13 +111,8 @@ void BM_WarmSolve(benchmark::State& state) {
 // One V-cycle of the psi (range 1 = 1) or the alpha psi equation (0) from the converged solution
 // with perturbed sources: the cost unit of the solves above.
 void BM_VCycle(benchmark::State& state) {
-  const GridShape s = grid(static_cast<int>(state.range(0)));
-  XcfcSolver sv(s);
-  const Star m(s);
-  SolveSettings set;
-  set.tolerance = 1e-10;
-  set.full_multigrid = true;
-  XcfcStats stats;
+  Problem P(static_cast<int>(state.range(0)));
+  auto& [s, sv, m, set, stats] = P;
   XcfcState st;
   solve_all(sv, m, st, set, stats);
   ScalarEquation eq = state.range(1) ? conformal_factor_equation() : lapse_equation();

@@ -6,8 +6,23 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <stdexcept>
 
 namespace remnant::xcfc {
+
+Boundary boundary_kind(const std::string& name, int d, CoordinateSystem cs, double span) {
+  if (name == "outflow") return Boundary::outer;
+  if (name == "reflect") return Boundary::reflect;
+  if (name == "axis") return Boundary::axis;
+  if (name == "origin") return Boundary::origin;
+  // Periodic is phi of a 3D cylindrical or spherical grid only: elsewhere there is no far field.
+  if (name == "periodic" && d == 2 && cs != CoordinateSystem::cartesian && std::abs(span - 2 * std::numbers::pi) < 1e-12)
+    return Boundary::periodic;
+  throw std::invalid_argument("XCFC: Grid boundary '" + name + "' in direction " + std::to_string(d) +
+                              " is not supported by the elliptic solver (allowed: outflow, reflect, axis, origin; "
+                              "periodic only for phi over [0, 2 pi] of a 3D cylindrical or spherical grid: other "
+                              "periodic domains have no far field)");
+}
 
 CompositeLayout layout_of_grid(const Context& ctx) {
   GridDriver& grid = ctx.grid();
@@ -21,19 +36,12 @@ CompositeLayout layout_of_grid(const Context& ctx) {
   const auto& hi = ctx.param<std::vector<double>>("Grid", "xmax");
   const auto& bl = ctx.param<std::vector<std::string>>("Grid", "boundary_lower");
   const auto& bu = ctx.param<std::vector<std::string>>("Grid", "boundary_upper");
-  // Periodic is phi of a 3D cylindrical or spherical grid only: elsewhere there is no far field.
   auto kind = [&](const std::string& k, int d) {
-    if (k == "outflow") return Boundary::outer;
-    if (k == "reflect") return Boundary::reflect;
-    if (k == "axis") return Boundary::axis;
-    if (k == "origin") return Boundary::origin;
-    const auto u = static_cast<std::size_t>(d);
-    if (k == "periodic" && d == 2 && s.coordinates != CoordinateSystem::cartesian &&
-        std::abs(hi[u] - lo[u] - 2 * std::numbers::pi) < 1e-12)
-      return Boundary::periodic;
-    throw RunError("XCFC: Grid boundary '" + k + "' in direction " + std::to_string(d) +
-                   " is not supported by the elliptic solver (allowed: outflow, reflect, axis, origin; periodic only "
-                   "for phi over [0, 2 pi] of a 3D cylindrical or spherical grid: other periodic domains have no far field)");
+    try {
+      return boundary_kind(k, d, s.coordinates, hi[static_cast<std::size_t>(d)] - lo[static_cast<std::size_t>(d)]);
+    } catch (const std::invalid_argument& e) {
+      throw RunError(e.what());
+    }
   };
   for (int d = 0; d < 3; ++d) {
     const auto u = static_cast<std::size_t>(d);

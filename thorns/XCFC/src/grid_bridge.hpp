@@ -6,12 +6,17 @@
 // (exact: every leaf cell is written by one rank, the rest are zeros), so results are bit-identical
 // for any number of ranks; covered cells then take the volume-weighted mean of their children.
 #include <map>
+#include <string>
 #include <vector>
 
 #include "XCFC/composite_multigrid.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::xcfc {
+
+// The solver's kind of a Grid boundary name in direction d (span: the direction's extent); throws
+// std::invalid_argument naming the allowed kinds.
+Boundary boundary_kind(const std::string& name, int d, CoordinateSystem cs, double span);
 
 // The composite layout of the Grid's forest; throws RunError for boundaries the solver lacks.
 CompositeLayout layout_of_grid(const Context& ctx);

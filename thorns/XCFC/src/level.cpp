@@ -96,13 +96,19 @@ Level::Level(const GridShape& s) : shape(s) {
       line_w[d].assign(nc, 0.0);
       line_inv[d].assign(nc, 0.0);
     }
+  // Face ghosts: index lists, and for outer faces the Robin factors from the ghost's and the
+  // inner cell's distances to the origin.
   for (int d = 0; d < 3; ++d) {
     if (!s.used(d)) continue;
     const int e1 = (d + 1) % 3, e2 = (d + 2) % 3;
     for (int side = 0; side < 2; ++side) {
       GhostFace& gf = ghost_faces[d][side];
+      const bool outer = s.boundary[d][side] == Boundary::outer;
+      auto &f1 = robin1[d][side], &f2 = robin2[d][side];
+      if (outer) f1.assign(static_cast<std::size_t>(s.n[e1]) * s.n[e2], 0.0), f2.assign(f1.size(), 0.0);
+      std::size_t t = 0;
       for (int t2 = 0; t2 < s.n[e2]; ++t2)
-        for (int t1 = 0; t1 < s.n[e1]; ++t1) {
+        for (int t1 = 0; t1 < s.n[e1]; ++t1, ++t) {
           std::array<int, 3> gi{}, m{};
           gi[d] = side == 0 ? -1 : s.n[d], gi[e1] = t1, gi[e2] = t2;
           m = gi;
@@ -111,23 +117,12 @@ Level::Level(const GridShape& s) : shape(s) {
           gf.inner.push_back(at(m[0], m[1], m[2]));
           const auto im = s.image({gi[0], gi[1], gi[2]}, d, side);
           gf.mirror.push_back(at(static_cast<int>(im[0]), static_cast<int>(im[1]), static_cast<int>(im[2])));
-        }
-      if (s.boundary[d][side] != Boundary::outer) continue;
-      auto &f1 = robin1[d][side], &f2 = robin2[d][side];
-      f1.assign(static_cast<std::size_t>(s.n[e1]) * s.n[e2], 0.0);
-      f2.assign(f1.size(), 0.0);
-      for (int t2 = 0; t2 < s.n[e2]; ++t2)
-        for (int t1 = 0; t1 < s.n[e1]; ++t1) {
-          std::array<int, 3> gi{}, m{};
-          gi[d] = side == 0 ? -1 : s.n[d], gi[e1] = t1, gi[e2] = t2;
-          m = gi;
-          m[d] = side == 0 ? 0 : s.n[d] - 1;
+          if (!outer) continue;
           const Point3 Xi = coords::to_cartesian(cs, s.point(m[0], m[1], m[2]));
           const Point3 Xg = coords::to_cartesian(cs, s.point(gi[0], gi[1], gi[2]));
-          const double ri = std::hypot(Xi[0], Xi[1], Xi[2]), rg = std::hypot(Xg[0], Xg[1], Xg[2]);
-          const std::size_t t = static_cast<std::size_t>(t1) + static_cast<std::size_t>(s.n[e1]) * t2;
-          f1[t] = std::pow(ri / rg, 1.0);
-          f2[t] = std::pow(ri / rg, 2.0);
+          const double ratio = std::hypot(Xi[0], Xi[1], Xi[2]) / std::hypot(Xg[0], Xg[1], Xg[2]);
+          f1[t] = ratio;
+          f2[t] = ratio * ratio;
         }
     }
   }

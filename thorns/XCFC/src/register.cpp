@@ -320,11 +320,36 @@ void prestep(Context& ctx) {
   if (trigger > 0 && psi_residual(ctx) > trigger) solve_sequence(ctx, false, "residual");
 }
 
+// Before anything is computed: the Grid's boundaries must be ones the solver knows, and 3D
+// cylindrical and spherical grids must stay unrefined (README, "Solver").
+void check_parameters(Context& ctx) {
+  const int dim = ctx.grid().dimension();
+  const CoordinateSystem cs = ctx.grid().coordinates();
+  const auto& lo = ctx.param<std::vector<double>>("Grid", "xmin");
+  const auto& hi = ctx.param<std::vector<double>>("Grid", "xmax");
+  for (const char* side : {"boundary_lower", "boundary_upper"}) {
+    const auto& names = ctx.param<std::vector<std::string>>("Grid", side);
+    for (int d = 0; d < dim; ++d) {
+      const auto u = static_cast<std::size_t>(d);
+      try {
+        (void)boundary_kind(names[u], d, cs, hi[u] - lo[u]);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(ctx.params().origin("Grid", side), e.what());
+      }
+    }
+  }
+  if (dim == 3 && cs != CoordinateSystem::cartesian && ctx.param<std::int64_t>("Grid", "max_level") > 0)
+    throw InputError(ctx.params().origin("Grid", "max_level"),
+                     "XCFC: refined 3D cylindrical and spherical grids are not supported by the elliptic solver yet; "
+                     "allowed: Grid::max_level = 0 on them (or 2D, or 3D Cartesian with any max_level)");
+}
+
 }  // namespace
 }  // namespace remnant::xcfc
 
 REMNANT_REGISTER_THORN(XCFC) {
   using namespace remnant::xcfc;
+  reg.function("XCFC_CheckParameters", check_parameters);
   reg.function("XCFC_Initial", initial);
   reg.function("XCFC_Solve", prestep);
   reg.persistent_state(

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "XCFC/multigrid.hpp"
 #include "XCFC/structured_grid.hpp"
 
 namespace remnant::xcfc::test {
@@ -106,5 +107,33 @@ void for_cells(const GridShape& s, F&& f) {
 }
 
 inline double order(double coarse, double fine) { return std::log2(coarse / fine); }
+
+// The scalar xCFC equation whose solution is the bump, with physical signs (s1 = -2 pi E~ <= 0,
+// s7 = -A^2/8 <= 0, k >= 0) and s0 making it exact: the psi type Lap u = s1/u + s7/u^7 + s0 or
+// the alpha psi type Lap u = k u + s0. Dirichlet values of the bump at the outer faces; the exact
+// cell values in *exact when given.
+inline ScalarEquation manufactured_equation(const GridShape& s, const Bump& bump, bool nonlinear,
+                                            std::vector<double>* exact = nullptr) {
+  ScalarEquation eq;
+  eq.s0.resize(s.cells());
+  if (nonlinear) eq.s1.resize(s.cells()), eq.s7.resize(s.cells());
+  else eq.k.resize(s.cells());
+  if (exact) exact->resize(s.cells());
+  for_cells(s, [&](std::size_t q, int i, int j, int k) {
+    const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
+    const double u = bump(X), lap = bump.laplacian(X);
+    const double w = std::exp(-0.3 * (X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
+    if (exact) (*exact)[q] = u;
+    if (nonlinear) {
+      eq.s1[q] = -0.2 * w, eq.s7[q] = -0.05 * w;
+      eq.s0[q] = lap - eq.s1[q] / u - eq.s7[q] / std::pow(u, 7);
+    } else {
+      eq.k[q] = 0.3 * w;
+      eq.s0[q] = lap - eq.k[q] * u;
+    }
+  });
+  eq.dirichlet = [s, bump](const Point3& x) { return bump(coords::to_cartesian(s.coordinates, x)); };
+  return eq;
+}
 
 }  // namespace remnant::xcfc::test

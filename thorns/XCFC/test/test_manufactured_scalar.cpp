@@ -21,29 +21,10 @@ struct Result {
 Result solve_case(const Case& c, int factor, bool nonlinear, bool direct_1d = true) {
   const GridShape s = scaled(c.shape, factor);
   Multigrid mg(s);
-  ScalarEquation eq;
   Bump bump = c.bump;
   if (!nonlinear) bump.amplitude = -0.3;  // alpha psi < 1 at the centre
-  std::vector<double> exact(s.cells());
-  // Physical signs: s1 = -2 pi E~ <= 0, s7 = -A^2/8 <= 0, k >= 0; s0 makes the solution exact.
-  eq.s0.resize(s.cells());
-  if (nonlinear) eq.s1.resize(s.cells()), eq.s7.resize(s.cells());
-  else eq.k.resize(s.cells());
-  for_cells(s, [&](std::size_t q, int i, int j, int k) {
-    const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
-    const double u = bump(X), lap = bump.laplacian(X);
-    const double w = std::exp(-0.3 * (X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
-    exact[q] = u;
-    if (nonlinear) {
-      eq.s1[q] = -0.2 * w;
-      eq.s7[q] = -0.05 * w;
-      eq.s0[q] = lap - eq.s1[q] / u - eq.s7[q] / std::pow(u, 7);
-    } else {
-      eq.k[q] = 0.3 * w;
-      eq.s0[q] = lap - eq.k[q] * u;
-    }
-  });
-  eq.dirichlet = [&](const Point3& x) { return bump(coords::to_cartesian(s.coordinates, x)); };
+  std::vector<double> exact;
+  const ScalarEquation eq = manufactured_equation(s, bump, nonlinear, &exact);
   std::vector<double> u(s.cells(), 1.0);
   SolveSettings set;
   set.tolerance = 1e-10;

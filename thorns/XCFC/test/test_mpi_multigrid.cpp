@@ -31,25 +31,10 @@ struct Problem {
 Problem make_problem(const GridShape& s, bool nonlinear, bool m1) {
   Problem p;
   const Bump bump{1.0, nonlinear ? 0.3 : -0.3, {0.5, 0.6, 0.7}, {0, 0, 0}};
+  p.eq = manufactured_equation(s, bump, nonlinear);
   ScalarEquation& eq = p.eq;
-  eq.s0.resize(s.cells());
-  if (nonlinear) eq.s1.resize(s.cells()), eq.s7.resize(s.cells());
-  else eq.k.resize(s.cells());
-  for_cells(s, [&](std::size_t q, int i, int j, int k) {
-    const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
-    const double u = bump(X), lap = bump.laplacian(X);
-    const double w = std::exp(-0.3 * (X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
-    if (nonlinear) {
-      eq.s1[q] = -0.2 * w, eq.s7[q] = -0.05 * w;
-      eq.s0[q] = lap - eq.s1[q] / u - eq.s7[q] / std::pow(u, 7);
-    } else {
-      eq.k[q] = 0.3 * w;
-      eq.s0[q] = lap - eq.k[q] * u;
-    }
-  });
-  if (nonlinear) {
-    eq.dirichlet = [s, bump](const Point3& x) { return bump(coords::to_cartesian(s.coordinates, x)); };
-  } else {
+  if (!nonlinear) {
+    eq.dirichlet = nullptr;
     eq.far_value = 1.0;
   }
   if (m1) {

@@ -219,6 +219,7 @@ def mode_curvilinear3d(r):
     _, p = mig.run("sph3d_amr", 1, sph3 + ["Grid::max_level=1", "Grid::regions=[sphere]", "Grid::region_levels=[1]",
                                            "Grid::region_bounds=[0,10,0,0,0,0]"], expect_ok=False)
     assert p.returncode != 0 and "refined 3D cylindrical and spherical grids are not supported" in p.stdout, p.stdout[-2000:]
+    assert "Grid::max_level" in p.stdout and "XCFC_Initial" not in p.stdout, "refused before the initial data: " + p.stdout[-2000:]
     print("a refined 3D spherical grid is refused: " + [l for l in p.stdout.splitlines() if "not supported" in l][0])
 
 
