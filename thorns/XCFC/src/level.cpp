@@ -88,7 +88,8 @@ Level::Level(const GridShape& s) : shape(s) {
       }
   for (double d : diagonal) max_diagonal = std::max(max_diagonal, d);
   const int longest = std::max({s.n[0], s.n[1], s.n[2]});
-  for (auto* w : {&line_di, &line_rhs}) w->assign(static_cast<std::size_t>(longest), 0.0);
+  // Line relaxation interleaves up to 4 lines (line_relaxation.cpp).
+  for (auto* w : {&line_di, &line_rhs}) w->assign(4 * static_cast<std::size_t>(longest), 0.0);
   if (s.dimension <= 2)
     for (int d = 0; d < s.dimension; ++d) {
       const std::size_t lines = nc / static_cast<std::size_t>(s.n[d]);

@@ -32,7 +32,7 @@ struct Level {
   };
   std::array<std::array<GhostFace, 2>, 3> ghost_faces;
   std::vector<double> restrict_volume;            // sum of the fine volumes restricted into each cell
-  std::vector<double> line_di, line_rhs;  // line-relaxation work (longest line)
+  std::vector<double> line_di, line_rhs;  // line-relaxation work (4 interleaved lines)
   std::vector<double> line_scratch;       // 3D line relaxation: six arrays of the longest line
   std::vector<double> line_z, line_cyclic;  // 3D cyclic phi lines of linear equations (factors)
   std::vector<double> shell_scratch;      // inner-shell plane relaxation work

@@ -7,9 +7,11 @@
 namespace remnant::xcfc {
 namespace {
 
-template <bool Factored>
-long long pass(Level& L, const Lines& ln, int colour, int t0, int t1) {
-  const Ops o(L);
+// G lines of one colour at once (t, t + 2, ...): the Thomas recurrences are serial within a line,
+// so interleaving independent lines hides their latency (each line's arithmetic is unchanged, so
+// are its bits). Work arrays hold G entries per position along the line.
+template <bool Factored, int G>
+void pass_group(Level& L, const Lines& ln, const Ops& o, int t) {
   const int d = ln.d, n = ln.n;
   double* u = L.u.data();
   const double *alo = o.lo[d], *ahi = o.hi[d];
@@ -19,53 +21,73 @@ long long pass(Level& L, const Lines& ln, int colour, int t0, int t1) {
   double *r = L.line_rhs.data(), *dd = L.line_di.data();
   const bool nonlinear = o.nonlinear();
   const std::ptrdiff_t pd = ln.pd, pe = ln.pe, qd = ln.qd;
-  long long cells = 0;
-  for (int t = t0 + ((colour - t0) & 1); t < t1; t += 2, cells += n) {
-    const std::size_t q0 = ln.q0(t);
-    const std::ptrdiff_t p0 = ln.p0(L, t);
-    // Right-hand sides and forward elimination in one pass.
-    double prev_r = 0, prev_d = 1, prev_up = 0;  // prev_d: inverse pivot
-    std::size_t q = q0;
-    std::ptrdiff_t p = p0;
-    for (int m = 0; m < n; ++m, q += static_cast<std::size_t>(qd), p += pd) {
-      const double u0 = u[p];
-      double b = o.f[q];
-      if (tlo) b -= tlo[q] * u[p - pe] + thi[q] * u[p + pe];
-      if (m == 0) b -= alo[q] * (u[p - pd] - c1lo[t] * u0);
-      if (m == n - 1) b -= ahi[q] * (u[p + pd] - c1hi[t] * u0);
+  std::size_t q[G];
+  std::ptrdiff_t p[G];
+  int tg[G];
+  double prev_r[G], prev_d[G], prev_up[G];
+  for (int g = 0; g < G; ++g) {
+    tg[g] = t + 2 * g, q[g] = ln.q0(tg[g]), p[g] = ln.p0(L, tg[g]);
+    prev_r[g] = 0, prev_d[g] = 1, prev_up[g] = 0;  // prev_d: inverse pivot
+  }
+  // Right-hand sides and forward elimination in one pass.
+  for (int m = 0; m < n; ++m) {
+    for (int g = 0; g < G; ++g) {
+      const std::size_t qq = q[g];
+      const std::ptrdiff_t pp = p[g];
+      const double u0 = u[pp];
+      double b = o.f[qq];
+      if (tlo) b -= tlo[qq] * u[pp - pe] + thi[qq] * u[pp + pe];
+      if (m == 0) b -= alo[qq] * (u[pp - pd] - c1lo[tg[g]] * u0);
+      if (m == n - 1) b -= ahi[qq] * (u[pp + pd] - c1hi[tg[g]] * u0);
       if constexpr (Factored) {
-        b += o.s0[q];
-        prev_r = b - w[q] * prev_r;
+        b += o.s0[qq];
+        prev_r[g] = b - w[qq] * prev_r[g];
       } else {
         double dR;
-        b += o.source_and_derivative(q, u0, dR) - dR * u0;
-        double di = -o.diag[q] - dR;
-        if (m == 0) di += alo[q] * c1lo[t];
-        if (m == n - 1) di += ahi[q] * c1hi[t];
+        b += o.source_and_derivative(qq, u0, dR) - dR * u0;
+        double di = -o.diag[qq] - dR;
+        if (m == 0) di += alo[qq] * c1lo[tg[g]];
+        if (m == n - 1) di += ahi[qq] * c1hi[tg[g]];
         if (m > 0) {
-          const double wm = alo[q] * prev_d;
-          di -= wm * prev_up;
-          b -= wm * prev_r;
+          const double wm = alo[qq] * prev_d[g];
+          di -= wm * prev_up[g];
+          b -= wm * prev_r[g];
         }
-        prev_r = b, prev_d = dd[m] = 1.0 / di, prev_up = ahi[q];
+        prev_r[g] = b, prev_d[g] = dd[m * G + g] = 1.0 / di, prev_up[g] = ahi[qq];
       }
-      r[m] = prev_r;
-    }
-    // Back substitution.
-    double x = 0;
-    for (int m = n - 1; m >= 0; --m) {
-      q -= static_cast<std::size_t>(qd), p -= pd;
-      if constexpr (Factored) {
-        x = (r[m] - ahi[q] * x) * inv[q];
-        u[p] = x;
-      } else {
-        x = (r[m] - ahi[q] * x) * dd[m];  // x = 0 at the last cell
-        double un = x;
-        if (nonlinear && !(un > 0.1 * u[p])) un = 0.5 * u[p];
-        u[p] = un;
-      }
+      r[m * G + g] = prev_r[g];
+      q[g] += static_cast<std::size_t>(qd), p[g] += pd;
     }
   }
+  // Back substitution.
+  double x[G];
+  for (int g = 0; g < G; ++g) x[g] = 0;
+  for (int m = n - 1; m >= 0; --m)
+    for (int g = 0; g < G; ++g) {
+      q[g] -= static_cast<std::size_t>(qd), p[g] -= pd;
+      const std::size_t qq = q[g];
+      if constexpr (Factored) {
+        x[g] = (r[m * G + g] - ahi[qq] * x[g]) * inv[qq];
+        u[p[g]] = x[g];
+      } else {
+        x[g] = (r[m * G + g] - ahi[qq] * x[g]) * dd[m * G + g];  // x = 0 at the last cell
+        double un = x[g];
+        if (nonlinear && !(un > 0.1 * u[p[g]])) un = 0.5 * u[p[g]];
+        u[p[g]] = un;
+      }
+    }
+}
+
+template <bool Factored>
+long long pass(Level& L, const Lines& ln, int colour, int t0, int t1) {
+  constexpr int G = 4;
+  const Ops o(L);
+  const std::size_t need = static_cast<std::size_t>(G) * static_cast<std::size_t>(ln.n);
+  if (L.line_rhs.size() < need) L.line_rhs.resize(need), L.line_di.resize(need);
+  long long cells = 0;
+  int t = t0 + ((colour - t0) & 1);
+  for (; t + 2 * (G - 1) < t1; t += 2 * G, cells += static_cast<long long>(G) * ln.n) pass_group<Factored, G>(L, ln, o, t);
+  for (; t < t1; t += 2, cells += ln.n) pass_group<Factored, 1>(L, ln, o, t);
   return cells;
 }
 
