@@ -24,7 +24,9 @@
 #include "level.hpp"
 #include "level_ops.hpp"
 #include "line_relaxation.hpp"
+#include "line_relaxation_3d.hpp"
 #include "point_relaxation.hpp"
+#include "shell_relaxation.hpp"
 
 namespace remnant::xcfc {
 
@@ -53,12 +55,6 @@ struct CompositeMultigrid::Impl {
     }
     const GridShape& b = l.base;
     const int L = l.finest();
-    // Patches relax by points, which stall next to the axis of a 3D curvilinear grid (the base
-    // level needs cyclic phi lines and shell planes), and a patch's phi lines do not close.
-    if (L > 0 && b.dimension == 3 && b.coordinates != CoordinateSystem::cartesian)
-      throw std::invalid_argument(
-          "CompositeMultigrid: refined 3D cylindrical and spherical grids are not supported (uniform 3D grids are; "
-          "refined grids in 1D, 2D and 3D Cartesian)");
     if (L > 0)
       for (int d = 0; d < b.dimension; ++d)
         if (l.patch_cells[d] < 2 || l.patch_cells[d] % 2 != 0 || b.n[d] % l.patch_cells[d] != 0)
@@ -118,12 +114,14 @@ struct CompositeMultigrid::Impl {
     }
     if (b.dimension == 2)
       for (int t = 1; t <= L; ++t) build_runs(tiers[static_cast<std::size_t>(t)]);
+    if (curvilinear_3d())
+      for (int t = 1; t <= L; ++t) build_runs_3d(tiers[static_cast<std::size_t>(t)]);
     for (int t = 1; t <= L; ++t) {
       Tier& T = tiers[static_cast<std::size_t>(t)];
       std::vector<std::vector<int>> singles;
       for (std::size_t p = 0; p < T.patches.size(); ++p) singles.push_back({static_cast<int>(p)});
       T.points = split(T, singles);
-      for (int d = 0; d < 2; ++d) {
+      for (int d = 0; d < 3; ++d) {
         std::vector<std::vector<int>> units;
         for (const auto& R : T.runs[static_cast<std::size_t>(d)]) units.push_back(R.patches);
         T.lines[static_cast<std::size_t>(d)] = split(T, units);
@@ -158,6 +156,9 @@ struct CompositeMultigrid::Impl {
     return i;
   }
   bool refined() const { return tiers.size() > 1; }
+  // 3D cylindrical and spherical: patches relax along runs in all three directions (cyclic around
+  // whole phi rings) and the origin's complete shells as planes, as the base level does.
+  bool curvilinear_3d() const { return layout.base.dimension == 3 && layout.base.coordinates != CoordinateSystem::cartesian; }
 
   Tier::Split split(const Tier& T, std::vector<std::vector<int>> units) const { return make_split(T, std::move(units), nranks); }
   std::pair<std::size_t, std::size_t> mine(const Tier::Split& S) const { return owned_units(S, rank); }
@@ -173,9 +174,11 @@ struct CompositeMultigrid::Impl {
     for (int d = 0; d < s.dimension; ++d) {
       s.n[d] = T.nb[d];
       s.lo[d] = T.shape.lo[d] + static_cast<double>(c[d]) * T.shape.dx[d];
-      // A periodic face's neighbour is across the wrap: interface too (the recipes wrap).
-      if (c[d] > 0 || s.boundary[d][0] == Boundary::periodic) s.boundary[d][0] = Boundary::interface;
-      if (c[d] + T.nb[d] < T.shape.n[d] || s.boundary[d][1] == Boundary::periodic) s.boundary[d][1] = Boundary::interface;
+      // On refined levels a periodic face's neighbour is across the wrap: an interface too (the
+      // recipes wrap). The base level is one patch: it keeps its periodic faces.
+      const bool wrap = t > 0 && s.boundary[d][0] == Boundary::periodic;
+      if (c[d] > 0 || wrap) s.boundary[d][0] = Boundary::interface;
+      if (c[d] + T.nb[d] < T.shape.n[d] || wrap) s.boundary[d][1] = Boundary::interface;
     }
     return s;
   }
@@ -356,8 +359,31 @@ struct CompositeMultigrid::Impl {
         set_line_ends(P, eq.boundary);
         factor_lines(P);
       }
+    if (curvilinear_3d())
+      for (auto& T : tiers) {
+        auto prepare_unit = [&](Tier::Run& R) {
+          Level& RL = R.level;
+          const Level& P0 = T.patches[static_cast<std::size_t>(R.patches.front())];
+          for (auto a : {&Level::k_eq, &Level::s0, &Level::s1, &Level::s7}) {
+            if ((P0.*a).empty()) {
+              (RL.*a).clear();
+              continue;
+            }
+            (RL.*a).assign(RL.cells(), 0.0);
+            copy_unit<true>(T, R, a, false);
+          }
+          add_mode_term(RL, eq.boundary.mode);
+          RL.f.assign(RL.cells(), 0.0);
+          RL.r.assign(RL.cells(), 0.0);
+          RL.u.assign(RL.ghosted_size, 0.0);
+          factor_lines_3d(RL, eq.boundary);
+        };
+        for (auto& runs : T.runs)
+          for (auto& R : runs) prepare_unit(R);
+        for (auto& R : T.shell) prepare_unit(R);
+      }
     for (auto& T : tiers)
-      for (int d = 0; d < 2; ++d)
+      for (int d = 0; d < (curvilinear_3d() ? 0 : 2); ++d)
         for (auto& R : T.runs[static_cast<std::size_t>(d)]) {
           Level& RL = R.level;
           const Level& P0 = T.patches[static_cast<std::size_t>(R.patches.front())];
@@ -404,6 +430,7 @@ struct CompositeMultigrid::Impl {
   // that the coarse correction removes slowly: points converge at 0.1-0.2 per cycle instead.)
   void relax(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
     Tier& T = tiers[static_cast<std::size_t>(t)];
+    if (t > 0 && curvilinear_3d()) return relax_curvilinear_3d(t, eq, par, sweeps);
     if (T.shape.dimension == 2) {
       for (int d = 0; d < 2; ++d)
         for (auto& R : T.runs[static_cast<std::size_t>(d)]) copy_run<true>(T, R, d, &Level::f, false);
@@ -433,6 +460,35 @@ struct CompositeMultigrid::Impl {
         }
         exchange(T, T.points);
       }
+  }
+
+  // 3D cylindrical and spherical tiers: zebra lines along runs in r, theta (z) and phi, then the
+  // origin's complete shells as planes (every rank does those: they are few and the tier is
+  // complete on every rank after the line passes).
+  void relax_curvilinear_3d(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
+    Tier& T = tiers[static_cast<std::size_t>(t)];
+    for (auto& runs : T.runs)
+      for (auto& R : runs) copy_unit<true>(T, R, &Level::f, false);
+    for (auto& R : T.shell) copy_unit<true>(T, R, &Level::f, false);
+    for (int sweep = 0; sweep < sweeps; ++sweep)
+      for (int d = 0; d < 3; ++d) {
+        fill(t, eq, par);
+        const auto& S = T.lines[static_cast<std::size_t>(d)];
+        const auto [u0, u1] = mine(S);
+        for (std::size_t u = u0; u < u1; ++u) {
+          auto& R = T.runs[static_cast<std::size_t>(d)][u];
+          copy_unit<true>(T, R, &Level::u, true);
+          for (int colour = 0; colour < 2; ++colour) count(t, line_pass_3d(R.level, eq, d, colour));
+          copy_unit<false>(T, R, &Level::u, false);
+        }
+        exchange(T, S);
+      }
+    for (auto& R : T.shell) {
+      fill(t, eq, par);
+      copy_unit<true>(T, R, &Level::u, true);
+      count(t, relax_inner_shells(R.level, eq, angular_shells(R.level)));
+      copy_unit<false>(T, R, &Level::u, false);
+    }
   }
 
   // r = f - A(u) on every patch of the tier (ghosts filled first).

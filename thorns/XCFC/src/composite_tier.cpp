@@ -76,4 +76,64 @@ void build_runs(Tier& T) {
   }
 }
 
+void build_runs_3d(Tier& T) {
+  for (int d = 0; d < 3; ++d) {
+    const int e1 = (d + 1) % 3, e2 = (d + 2) % 3;
+    std::map<std::array<long long, 3>, int> order;  // (transverse blocks, along block) -> patch
+    for (std::size_t p = 0; p < T.corner.size(); ++p)
+      order[{T.corner[p][e1] / T.nb[e1], T.corner[p][e2] / T.nb[e2], T.corner[p][d] / T.nb[d]}] = static_cast<int>(p);
+    std::vector<int> run;
+    std::array<long long, 2> row{-1, -1};
+    long long last = -2;
+    auto close = [&] {
+      if (run.empty()) return;
+      GridShape s = T.patches[static_cast<std::size_t>(run.front())].shape;
+      s.n[d] = T.nb[d] * static_cast<int>(run.size());
+      s.boundary[d][1] = T.patches[static_cast<std::size_t>(run.back())].shape.boundary[d][1];
+      // The whole ring of a periodic direction: its lines close on themselves.
+      if (T.shape.boundary[d][0] == Boundary::periodic && static_cast<long long>(run.size()) == T.blocks[d])
+        s.boundary[d] = {Boundary::periodic, Boundary::periodic};
+      Tier::Run R{run, Level(s), {}};
+      for (std::size_t m = 0; m < run.size(); ++m) {
+        std::array<int, 3> o{0, 0, 0};
+        o[d] = static_cast<int>(m) * T.nb[d];
+        R.offset.push_back(o);
+      }
+      T.runs[static_cast<std::size_t>(d)].push_back(std::move(R));
+      run.clear();
+    };
+    for (const auto& [k, p] : order) {
+      if (k[0] != row[0] || k[1] != row[1] || k[2] != last + 1) close();
+      row = {k[0], k[1]}, last = k[2];
+      run.push_back(p);
+    }
+    close();
+  }
+  // Origin shells: the radial block layers from r = 0 on that hold every (theta, phi) block.
+  const GridShape& ts = T.shape;
+  if (ts.coordinates != CoordinateSystem::spherical || ts.boundary[0][0] != Boundary::origin ||
+      ts.boundary[2][0] != Boundary::periodic)
+    return;
+  const long long per_layer = T.blocks[1] * T.blocks[2];
+  std::map<long long, std::vector<int>> layers;
+  for (std::size_t p = 0; p < T.corner.size(); ++p) layers[T.corner[p][0] / T.nb[0]].push_back(static_cast<int>(p));
+  std::vector<int> patches;
+  std::vector<std::array<int, 3>> offsets;
+  long long complete = 0;
+  for (const auto& [layer, ps] : layers) {
+    if (layer != complete || static_cast<long long>(ps.size()) != per_layer) break;
+    for (int p : ps) {
+      patches.push_back(p);
+      const Cell& c = T.corner[static_cast<std::size_t>(p)];
+      offsets.push_back({static_cast<int>(c[0]), static_cast<int>(c[1]), static_cast<int>(c[2])});
+    }
+    ++complete;
+  }
+  if (complete == 0) return;
+  GridShape s = ts;
+  s.n[0] = static_cast<int>(complete) * T.nb[0];
+  s.boundary[0][1] = s.n[0] < ts.n[0] ? Boundary::interface : ts.boundary[0][1];
+  T.shell.push_back({std::move(patches), Level(s), std::move(offsets)});
+}
+
 }  // namespace remnant::xcfc

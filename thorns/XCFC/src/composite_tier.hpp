@@ -29,13 +29,18 @@ struct Tier {
   std::vector<std::vector<double>> ubar, corr, scratch;  // ghosted, ghosted, interior
   std::vector<std::size_t> window_size;
   std::vector<std::array<int, 3>> window_n;
-  // 2D line relaxation: the patches of each row (direction d) that follow each other without a
-  // gap form a run, relaxed as one Level so that lines cross patch boundaries.
+  // Line relaxation (2D, 3D cylindrical and spherical): the patches of each row (direction d) that
+  // follow each other without a gap form a run, relaxed as one Level so that lines cross patch
+  // boundaries (a run around the whole phi ring is periodic: cyclic lines).
   struct Run {
     std::vector<int> patches;  // in order along d
     Level level;
+    std::vector<std::array<int, 3>> offset;  // 3D: each patch's first cell in the run's Level
   };
-  std::array<std::vector<Run>, 2> runs;
+  std::array<std::vector<Run>, 3> runs;
+  // 3D spherical: the complete shells of patches next to the origin (every theta and phi block of
+  // the innermost radial blocks) as one Level, for the plane relaxation of shell_relaxation.
+  std::vector<Run> shell;
   // The split of the relaxation between the ranks: units (single patches for point smoothing,
   // runs of direction d for lines) in contiguous chunks balanced by cells; after a pass the
   // updated interiors are exchanged (MPI_Allgatherv), so every rank again holds the whole tier.
@@ -45,7 +50,7 @@ struct Tier {
     std::vector<int> counts, displs;      // doubles per rank
   };
   Split points;
-  std::array<Split, 2> lines;
+  std::array<Split, 3> lines;
 };
 
 
@@ -59,6 +64,41 @@ inline std::pair<std::size_t, std::size_t> owned_units(const Tier::Split& S, int
 void exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank, int nranks);
 // The runs of both directions of a 2D tier.
 void build_runs(Tier& T);
+// The runs of the three directions of a 3D cylindrical or spherical tier, and its origin shells.
+void build_runs_3d(Tier& T);
+
+// Copies between a 3D unit (a run or the shell Level) and its patches: interior cells, and with
+// `ghosts` (towards the unit only) the patches' face ghosts that are the unit's own ghosts. `array`
+// is Level::u (ghosted) or an interior array.
+template <bool ToUnit>
+void copy_unit(Tier& T, Tier::Run& R, std::vector<double> Level::*array, bool ghosts) {
+  Level& U = R.level;
+  const auto& un = U.shape.n;
+  const int g = ghosts ? 1 : 0;
+  for (std::size_t m = 0; m < R.patches.size(); ++m) {
+    Level& P = T.patches[static_cast<std::size_t>(R.patches[m])];
+    const auto& n = P.shape.n;
+    const auto& o = R.offset[m];
+    for (int k = -g; k < n[2] + g; ++k)
+      for (int j = -g; j < n[1] + g; ++j)
+        for (int i = -g; i < n[0] + g; ++i) {
+          const int out = (i < 0 || i >= n[0]) + (j < 0 || j >= n[1]) + (k < 0 || k >= n[2]);
+          if (out > 1) continue;  // edges and corners: no stencil reads them
+          const int a = o[0] + i, b = o[1] + j, c = o[2] + k;
+          const bool in_unit = a >= 0 && a < un[0] && b >= 0 && b < un[1] && c >= 0 && c < un[2];
+          if (out == 1 && in_unit) continue;  // another patch's interior cell
+          if (array == &Level::u) {
+            double& x = P.u[static_cast<std::size_t>(P.at(i, j, k))];
+            double& y = U.u[static_cast<std::size_t>(U.at(a, b, c))];
+            if constexpr (ToUnit) y = x; else if (out == 0) x = y;
+          } else if (out == 0) {
+            double& x = (P.*array)[P.cell(i, j, k)];
+            double& y = (U.*array)[U.cell(a, b, c)];
+            if constexpr (ToUnit) y = x; else x = y;
+          }
+        }
+  }
+}
 
 // Copies between a run and its patches: interior cells with the transverse ghosts and the run's end
 // ghosts (ToRun, ghosts); interior cells only (otherwise). `array` is Level::u (ghosted) or an

@@ -73,9 +73,6 @@ CompositeLayout layout_of_grid(const Context& ctx) {
       lay.patches.back().push_back({static_cast<int>(b[0] * lay.patch_cells[0]), static_cast<int>(b[1] * lay.patch_cells[1]),
                                     static_cast<int>(b[2] * lay.patch_cells[2])});
   }
-  if (!lay.patches.empty() && s.dimension == 3 && s.coordinates != CoordinateSystem::cartesian)
-    throw RunError("XCFC: refined 3D cylindrical and spherical grids are not supported by the elliptic solver yet "
-                   "(Grid::max_level or Grid::regions refine this grid); use a uniform 3D grid, or 2D, or 3D Cartesian");
   return lay;
 }
 

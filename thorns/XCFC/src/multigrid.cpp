@@ -198,17 +198,6 @@ struct Multigrid::Impl {
     }
   }
 
-  // The innermost shells of a spherical level whose theta coupling exceeds the radial one.
-  static int angular_shells(const Level& L) {
-    const GridShape& s = L.shape;
-    int i = 0;
-    for (; i < s.n[0]; ++i) {
-      const std::size_t q = L.cell(i, s.n[1] / 2, 0);
-      if (L.a_lo[1][q] + L.a_hi[1][q] < L.a_lo[0][q] + L.a_hi[0][q]) break;
-    }
-    return i;
-  }
-
   // 3D cylindrical and spherical levels (never split between ranks): zebra lines along d.
   void smooth_lines_3d(std::size_t l, const ScalarEquation& eq, int d) {
     Level& L = levels[l];

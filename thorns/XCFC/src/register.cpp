@@ -46,16 +46,20 @@ bool same_layout(const CompositeLayout& a, const CompositeLayout& b) {
          a.base.lo == b.base.lo && a.base.dx == b.base.dx && a.patch_cells == b.patch_cells && a.patches == b.patches;
 }
 
-// A refined level whose blocks at the spherical origin do not span every theta: the composite
-// V-cycle then converges slowly (README, "Refined grids"); returns the first such level or 0.
+// A refined level whose blocks at the spherical origin do not span every theta (and phi in 3D): the
+// composite V-cycle then converges slowly (README, "Refined grids"); returns the first such level
+// or 0.
 int level_ending_in_theta_at_origin(const CompositeLayout& lay) {
   const GridShape& b = lay.base;
   if (b.coordinates != CoordinateSystem::spherical || b.dimension < 2 || b.boundary[0][0] != Boundary::origin) return 0;
+  // Cells of the (theta[, phi]) surface that level l + 1's patches at r = 0 cover, against all.
+  const bool three = b.dimension == 3;
   for (std::size_t l = 0; l < lay.patches.size(); ++l) {
     long long covered = 0;
     for (const auto& c : lay.patches[l])
-      if (c[0] == 0) covered += lay.patch_cells[1];
-    if (covered > 0 && covered < (static_cast<long long>(b.n[1]) << (l + 1))) return static_cast<int>(l) + 1;
+      if (c[0] == 0) covered += static_cast<long long>(lay.patch_cells[1]) * (three ? lay.patch_cells[2] : 1);
+    const long long all = (static_cast<long long>(b.n[1]) << (l + 1)) * (three ? static_cast<long long>(b.n[2]) << (l + 1) : 1);
+    if (covered > 0 && covered < all) return static_cast<int>(l) + 1;
   }
   return 0;
 }
@@ -67,7 +71,7 @@ XcfcSolver& solver(Context& ctx) {
   if (!rt.solver || !same_layout(lay, rt.layout)) {
     if (const int l = level_ending_in_theta_at_origin(lay); l > 0 && !rt.warned_theta)
       ctx.warn("XCFC: refinement level " + std::to_string(l) +
-               " ends in theta next to the spherical origin; the composite metric solve converges slowly there "
+               " ends in theta (or phi) next to the spherical origin; the composite metric solve converges slowly there "
                "(refine all theta near the origin, e.g. with a Grid::regions sphere; thorns/XCFC/README.md)"),
           rt.warned_theta = true;
     rt.layout = lay;
@@ -320,8 +324,7 @@ void prestep(Context& ctx) {
   if (trigger > 0 && psi_residual(ctx) > trigger) solve_sequence(ctx, false, "residual");
 }
 
-// Before anything is computed: the Grid's boundaries must be ones the solver knows, and 3D
-// cylindrical and spherical grids must stay unrefined (README, "Solver").
+// Before anything is computed: the Grid's boundaries must be ones the solver knows.
 void check_parameters(Context& ctx) {
   const int dim = ctx.grid().dimension();
   const CoordinateSystem cs = ctx.grid().coordinates();
@@ -338,10 +341,6 @@ void check_parameters(Context& ctx) {
       }
     }
   }
-  if (dim == 3 && cs != CoordinateSystem::cartesian && ctx.param<std::int64_t>("Grid", "max_level") > 0)
-    throw InputError(ctx.params().origin("Grid", "max_level"),
-                     "XCFC: refined 3D cylindrical and spherical grids are not supported by the elliptic solver yet; "
-                     "allowed: Grid::max_level = 0 on them (or 2D, or 3D Cartesian with any max_level)");
 }
 
 }  // namespace

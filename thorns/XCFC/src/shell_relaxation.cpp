@@ -24,6 +24,16 @@ double theta_end_factor(const Level& L, const ScalarEquation& eq, int side, std:
 
 }  // namespace
 
+int angular_shells(const Level& L) {
+  const GridShape& s = L.shape;
+  int i = 0;
+  for (; i < s.n[0]; ++i) {
+    const std::size_t q = L.cell(i, s.n[1] / 2, 0);
+    if (L.a_lo[1][q] + L.a_hi[1][q] < L.a_lo[0][q] + L.a_hi[0][q]) break;
+  }
+  return i;
+}
+
 long long relax_inner_shells(Level& L, const ScalarEquation& eq, int shells) {
   const GridShape& s = L.shape;
   const int n0 = s.n[0], nt = s.n[1], np = s.n[2];

@@ -13,4 +13,8 @@ namespace remnant::xcfc {
 // be current. Returns the number of cells relaxed.
 long long relax_inner_shells(Level& L, const ScalarEquation& eq, int shells);
 
+// The innermost shells of a spherical level whose theta coupling exceeds the radial one (the
+// shells to relax as planes: i < ~1/dtheta).
+int angular_shells(const Level& L);
+
 }  // namespace remnant::xcfc

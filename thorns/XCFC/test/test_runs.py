@@ -23,7 +23,8 @@
                  every 10) gives bit-identical analysis.tsv and xcfc.tsv on 1 and 2 ranks and after
                  a 1 -> 2 rank restart; a 2D spherical level ending in theta at the origin is reported
   curvilinear3d  the star on a 3D spherical grid (phi periodic): converged solves, bit-identical on 1
-                 and 2 ranks, the initial metric equal to the 2D one; refined 3D spherical is refused
+                 and 2 ranks, the initial metric equal to the 2D one; the same refined once inside
+                 r = 10 (composite solves): converged, bit-identical on 1 and 2 ranks
 """
 import os
 import sys
@@ -157,7 +158,7 @@ def mode_amr(r):
            "Grid::region_levels=[1]", "MoL::max_iterations=2"]
     _, part = mig.run("theta_part", 1, box + ["Grid::region_bounds=[0,4,0,0.5,0,7]"])
     _, whole = mig.run("theta_all", 1, box + ["Grid::region_bounds=[0,4,0,2,0,7]"])
-    assert "ends in theta next to the spherical origin" in part.stdout, part.stdout[-2000:]
+    assert "ends in theta (or phi) next to the spherical origin" in part.stdout, part.stdout[-2000:]
     assert "ends in theta" not in whole.stdout
     print("a level ending in theta at the origin is reported, one spanning all theta is not")
 
@@ -215,13 +216,27 @@ def mode_curvilinear3d(r):
         print("3D spherical 64 x 8 x 16 vs 2D 64 x 8 initial metric, %s: relative difference %.2e" % (col, d))
         assert d < 1e-7, "the 3D initial metric of the star differs from the 2D one (%s)" % col
     print("3D spherical run: solves converged, analysis.tsv and xcfc.tsv bit-identical on 1 and 2 ranks")
-    # Refined 3D curvilinear grids are refused with a message (not supported yet).
-    _, p = mig.run("sph3d_amr", 1, sph3 + ["Grid::max_level=1", "Grid::regions=[sphere]", "Grid::region_levels=[1]",
-                                           "Grid::region_bounds=[0,10,0,0,0,0]"], expect_ok=False)
-    assert p.returncode != 0 and "refined 3D cylindrical and spherical grids are not supported" in p.stdout, p.stdout[-2000:]
-    assert "Grid::max_level" in p.stdout and "XCFC_Initial" not in p.stdout, "refused before the initial data: " + p.stdout[-2000:]
-    print("a refined 3D spherical grid is refused: " + [l for l in p.stdout.splitlines() if "not supported" in l][0])
-
+    # Refined: one static level over every angle inside r = 10 (whole phi rings and origin shells).
+    amr = sph3 + ["Grid::max_level=1", "Grid::regions=[sphere]", "Grid::region_levels=[1]",
+                  "Grid::region_bounds=[0,10,0,0,0,0]", "MoL::max_iterations=2"]
+    r1, p1 = mig.run("sph3d_amr_np1", 1, amr)
+    r2, _ = mig.run("sph3d_amr_np2", 2, amr)
+    for name in ("analysis.tsv", "xcfc.tsv"):
+        assert rows(os.path.join(r1, name), name == "xcfc.tsv") == rows(os.path.join(r2, name), name == "xcfc.tsv"), \
+            "refined 3D spherical: " + name + " differs between 1 and 2 ranks"
+    solves = [dict(zip(names, l.split("\t"))) for l in rows(os.path.join(r1, "xcfc.tsv"))]
+    for s in solves:
+        for eq in ("X", "psi", "alphapsi", "beta"):
+            assert float(s[eq + "_residual"]) <= (1e-7 if s["reason"] == "initial" else 1e-6), "refined: unconverged %s" % s
+    flat_amr, _ = mig.run("sph2d_amr", 1, ["Grid::ncells=[64,8,1]", "Grid::block_size=[32,8,1]", "Grid::max_level=1",
+                                           "Grid::regions=[sphere]", "Grid::region_levels=[1]",
+                                           "Grid::region_bounds=[0,10,0,0,0,0]", "MoL::max_iterations=0"])
+    a1, a2r = columns(os.path.join(r1, "analysis.tsv")), columns(os.path.join(flat_amr, "analysis.tsv"))
+    for col in ("alpha_c", "psi_c", "rho_c"):
+        d = abs(a1[col][0] / a2r[col][0] - 1)
+        print("refined 3D spherical vs refined 2D (one level inside r = 10), initial %s: relative difference %.2e" % (col, d))
+        assert d < 1e-7, "the refined 3D initial metric differs from the refined 2D one (%s)" % col
+    print("refined 3D spherical: solves converged, bit-identical on 1 and 2 ranks")
 
 def main():
     remnant_runs.main(make_runner, {"restart": mode_restart, "extrapolation": mode_extrapolation,
