@@ -359,49 +359,35 @@ struct CompositeMultigrid::Impl {
         set_line_ends(P, eq.boundary);
         factor_lines(P);
       }
-    if (curvilinear_3d())
-      for (auto& T : tiers) {
-        auto prepare_unit = [&](Tier::Run& R) {
-          Level& RL = R.level;
-          const Level& P0 = T.patches[static_cast<std::size_t>(R.patches.front())];
-          for (auto a : {&Level::k_eq, &Level::s0, &Level::s1, &Level::s7}) {
-            if ((P0.*a).empty()) {
-              (RL.*a).clear();
-              continue;
-            }
-            (RL.*a).assign(RL.cells(), 0.0);
-            copy_unit<true>(T, R, a, false);
+    // Runs (and 3D shells): the equation copied from their patches, line ends and factors.
+    for (auto& T : tiers) {
+      auto prepare_unit = [&](Tier::Run& R, auto&& copy) {
+        Level& RL = R.level;
+        const Level& P0 = T.patches[static_cast<std::size_t>(R.patches.front())];
+        for (auto a : {&Level::k_eq, &Level::s0, &Level::s1, &Level::s7}) {
+          if ((P0.*a).empty()) {
+            (RL.*a).clear();
+            continue;
           }
-          add_mode_term(RL, eq.boundary.mode);
-          RL.f.assign(RL.cells(), 0.0);
-          RL.r.assign(RL.cells(), 0.0);
-          RL.u.assign(RL.ghosted_size, 0.0);
-          factor_lines_3d(RL, eq.boundary);
-        };
-        for (auto& runs : T.runs)
-          for (auto& R : runs) prepare_unit(R);
-        for (auto& R : T.shell) prepare_unit(R);
-      }
-    for (auto& T : tiers)
-      for (int d = 0; d < (curvilinear_3d() ? 0 : 2); ++d)
-        for (auto& R : T.runs[static_cast<std::size_t>(d)]) {
-          Level& RL = R.level;
-          const Level& P0 = T.patches[static_cast<std::size_t>(R.patches.front())];
-          for (auto a : {&Level::k_eq, &Level::s0, &Level::s1, &Level::s7}) {
-            if ((P0.*a).empty()) {
-              (RL.*a).clear();
-              continue;
-            }
-            (RL.*a).assign(RL.cells(), 0.0);
-            copy_run<true>(T, R, d, a, false);
-          }
-          add_mode_term(RL, eq.boundary.mode);
-          RL.f.assign(RL.cells(), 0.0);
-          RL.r.assign(RL.cells(), 0.0);
-          RL.u.assign(RL.ghosted_size, 0.0);
-          set_line_ends(RL, eq.boundary);
-          factor_lines(RL);
+          (RL.*a).assign(RL.cells(), 0.0);
+          copy(a);
         }
+        add_mode_term(RL, eq.boundary.mode);
+        RL.f.assign(RL.cells(), 0.0);
+        RL.r.assign(RL.cells(), 0.0);
+        RL.u.assign(RL.ghosted_size, 0.0);
+        if (curvilinear_3d()) return factor_lines_3d(RL, eq.boundary);
+        set_line_ends(RL, eq.boundary);
+        factor_lines(RL);
+      };
+      for (int d = 0; d < 3; ++d)
+        for (auto& R : T.runs[static_cast<std::size_t>(d)])
+          prepare_unit(R, [&](std::vector<double> Level::*a) {
+            if (curvilinear_3d()) copy_unit<true>(T, R, a, false);
+            else copy_run<true>(T, R, d, a, false);
+          });
+      for (auto& R : T.shell) prepare_unit(R, [&](std::vector<double> Level::*a) { copy_unit<true>(T, R, a, false); });
+    }
     base_eq = eq.boundary;
     const Level& B = tiers[0].patches[0];
     base_eq.k = B.k_eq, base_eq.s0 = B.s0, base_eq.s1 = B.s1, base_eq.s7 = B.s7;
