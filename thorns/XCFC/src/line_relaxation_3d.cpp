@@ -67,16 +67,16 @@ struct Lines3 {
     ijk[e1] = t1, ijk[e2] = t2;
     return {L.cell(ijk[0], ijk[1], ijk[2]), L.at(ijk[0], ijk[1], ijk[2])};
   }
-  std::size_t face(const Level& L, int t1, int t2) const {
+  // The line's index t1 + n_e1 t2, which is also its end cells' index on the faces across d.
+  std::size_t line(const Level& L, int t1, int t2) const {
     return static_cast<std::size_t>(t1) + static_cast<std::size_t>(L.shape.n[e1]) * static_cast<std::size_t>(t2);
   }
-  std::size_t line(const Level& L, int t1, int t2) const { return face(L, t1, t2); }
 };
 
 // Linear equations: the line matrices are fixed, so their elimination is done once per solve and
 // a pass is substitutions only (as in 2D). Cyclic lines keep the corrected tridiagonal part's
 // factors, its solution z for the corner vector and, per line, beta/gamma and the denominator.
-void factor_line(Level& L, const Lines3& ln, std::size_t q0, std::size_t line, std::size_t face, const ScalarEquation& eq) {
+void factor_line(Level& L, const Lines3& ln, std::size_t q0, std::size_t line, const ScalarEquation& eq) {
   const int n = ln.n;
   const Ops o(L);
   double* w = L.line_w[ln.d].data();
@@ -90,7 +90,7 @@ void factor_line(Level& L, const Lines3& ln, std::size_t q0, std::size_t line, s
     b0 -= gamma;
     bn -= alpha * beta / gamma;
   } else {
-    const double c1lo = end_factor(L, eq, ln.d, 0, face), c1hi = end_factor(L, eq, ln.d, 1, face);
+    const double c1lo = end_factor(L, eq, ln.d, 0, line), c1hi = end_factor(L, eq, ln.d, 1, line);
     L.end_c1[ln.d][0][line] = c1lo, L.end_c1[ln.d][1][line] = c1hi;
     b0 += alo[q_of(0)] * c1lo;
     bn += ahi[q_of(n - 1)] * c1hi;
@@ -184,59 +184,55 @@ void factor_lines_3d(Level& L, const ScalarEquation& eq) {
     if (ln.cyclic) L.line_z.resize(nc), L.line_cyclic.resize(2 * nc / static_cast<std::size_t>(ln.n));
     for (int t2 = 0; t2 < s.n[ln.e2]; ++t2)
       for (int t1 = 0; t1 < s.n[ln.e1]; ++t1)
-        factor_line(L, ln, ln.start(L, t1, t2).first, ln.line(L, t1, t2), ln.face(L, t1, t2), eq);
+        factor_line(L, ln, ln.start(L, t1, t2).first, ln.line(L, t1, t2), eq);
   }
   L.factored = true;
 }
 
 long long line_pass_3d(Level& L, const ScalarEquation& eq, int d, int colour) {
+  const Lines3 ln(L, d);
+  if (L.factored) return factored_pass(L, ln, colour);
   const GridShape& s = L.shape;
-  if (L.factored) return factored_pass(L, Lines3(L, d), colour);
-  const int e1 = (d + 1) % 3, e2 = (d + 2) % 3, n = s.n[d];
+  const int n = ln.n;
   const Ops o(L);
   double* u = L.u.data();
-  const std::ptrdiff_t pd = L.st[d], pe1 = L.st[e1], pe2 = L.st[e2];
-  const std::size_t qd = d == 0 ? 1 : d == 1 ? static_cast<std::size_t>(s.n[0]) : static_cast<std::size_t>(s.n[0]) * s.n[1];
-  const bool cyclic = s.boundary[d][0] == Boundary::periodic && n >= 3;
   const bool nonlinear = o.nonlinear();
-  const double *alo = o.lo[d], *ahi = o.hi[d], *lo1 = o.lo[e1], *hi1 = o.hi[e1], *lo2 = o.lo[e2], *hi2 = o.hi[e2];
+  const double *alo = o.lo[d], *ahi = o.hi[d], *lo1 = o.lo[ln.e1], *hi1 = o.hi[ln.e1], *lo2 = o.lo[ln.e2],
+               *hi2 = o.hi[ln.e2];
   const auto nn = static_cast<std::size_t>(n);
   L.line_scratch.resize(6 * nn);
   double *a = L.line_scratch.data(), *b = a + nn, *c = b + nn, *r = c + nn, *z = r + nn, *b2 = z + nn;
   long long cells = 0;
-  for (int t2 = 0; t2 < s.n[e2]; ++t2)
-    for (int t1 = 0; t1 < s.n[e1]; ++t1) {
+  for (int t2 = 0; t2 < s.n[ln.e2]; ++t2)
+    for (int t1 = 0; t1 < s.n[ln.e1]; ++t1) {
       if (((t1 + t2) & 1) != colour) continue;
-      std::array<int, 3> ijk{};
-      ijk[e1] = t1, ijk[e2] = t2;
-      const std::size_t q0 = L.cell(ijk[0], ijk[1], ijk[2]);
-      const std::ptrdiff_t p0 = L.at(ijk[0], ijk[1], ijk[2]);
-      const std::size_t face = static_cast<std::size_t>(t1) + static_cast<std::size_t>(s.n[e1]) * static_cast<std::size_t>(t2);
+      const auto [q0, p0] = ln.start(L, t1, t2);
+      const std::size_t line = ln.line(L, t1, t2);
       for (int m = 0; m < n; ++m) {
-        const std::size_t q = q0 + static_cast<std::size_t>(m) * qd;
-        const std::ptrdiff_t p = p0 + m * pd;
+        const std::size_t q = q0 + static_cast<std::size_t>(m) * ln.qd;
+        const std::ptrdiff_t p = p0 + m * ln.pd;
         const double u0 = u[p];
         double dR;
-        double rhs = o.f[q] - (lo1[q] * u[p - pe1] + hi1[q] * u[p + pe1] + lo2[q] * u[p - pe2] + hi2[q] * u[p + pe2]);
-        rhs += o.source_and_derivative(q, u0, dR) - dR * u0;
+        double rhs = o.f[q] - (lo1[q] * u[p - ln.pe1] + hi1[q] * u[p + ln.pe1] + lo2[q] * u[p - ln.pe2] + hi2[q] * u[p + ln.pe2]);
+        rhs += o.source_and_derivative(q, u0, dR) - dR * u0;  // one Newton linearisation per line
         double di = -o.diag[q] - dR;
         a[m] = alo[q], c[m] = ahi[q];
-        if (!cyclic && m == 0) {
-          const double c1 = end_factor(L, eq, d, 0, face);
-          rhs -= a[m] * (u[p - pd] - c1 * u0), di += a[m] * c1, a[m] = 0.0;
+        if (!ln.cyclic && m == 0) {
+          const double c1 = end_factor(L, eq, d, 0, line);
+          rhs -= a[m] * (u[p - ln.pd] - c1 * u0), di += a[m] * c1, a[m] = 0.0;
         }
-        if (!cyclic && m == n - 1) {
-          const double c1 = end_factor(L, eq, d, 1, face);
-          rhs -= c[m] * (u[p + pd] - c1 * u0), di += c[m] * c1, c[m] = 0.0;
+        if (!ln.cyclic && m == n - 1) {
+          const double c1 = end_factor(L, eq, d, 1, line);
+          rhs -= c[m] * (u[p + ln.pd] - c1 * u0), di += c[m] * c1, c[m] = 0.0;
         }
         b[m] = di, r[m] = rhs;
       }
-      if (cyclic) cyclic_thomas(n, a, b, c, r, z, b2);
+      if (ln.cyclic) cyclic_thomas(n, a, b, c, r, z, b2);
       else thomas(n, a, b, c, r);
       for (int m = 0; m < n; ++m) {
-        double& um = u[p0 + m * pd];
+        double& um = u[p0 + m * ln.pd];
         double un = r[m];
-        if (nonlinear && !(un > 0.1 * um)) un = 0.5 * um;
+        if (nonlinear && !(un > 0.1 * um)) un = 0.5 * um;  // keep psi positive
         um = un;
       }
       cells += n;

@@ -17,8 +17,8 @@
 #include "level_ops.hpp"
 #include "line_relaxation.hpp"
 #include "line_relaxation_3d.hpp"
-#include "shell_relaxation.hpp"
 #include "point_relaxation.hpp"
+#include "shell_relaxation.hpp"
 #include "transfers.hpp"
 #include "work_partition.hpp"
 

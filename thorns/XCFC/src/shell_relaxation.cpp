@@ -47,10 +47,10 @@ long long relax_inner_shells(Level& L, const ScalarEquation& eq, int shells) {
       }
   }
   const int modes = np / 2 + 1;
-  L.shell_scratch.resize(NT * NP + NT * 7 + NT * static_cast<std::size_t>(modes) * 2);
+  L.shell_scratch.resize(NT * NP + NT * 6 + NT * static_cast<std::size_t>(modes) * 2);
   double* res = L.shell_scratch.data();  // the shell's residual, [j][k]
   double* dRbar = res + NT * NP;
-  double *a = dRbar + NT, *b = a + NT, *c = b + NT, *b2 = c + NT, *re = b2 + NT, *im = re + NT;
+  double *a = dRbar + NT, *b = a + NT, *c = b + NT, *re = c + NT, *im = re + NT;
   double* hat = im + NT;  // per mode: the correction's real, then imaginary parts along theta
   const Ops o(L);
   const bool nonlinear = o.nonlinear();
@@ -92,7 +92,6 @@ long long relax_inner_shells(Level& L, const ScalarEquation& eq, int shells) {
       const double c1hi = theta_end_factor(L, eq, 1, NP * static_cast<std::size_t>(i));
       b[0] += a[0] * c1lo, a[0] = 0;
       b[nt - 1] += c[nt - 1] * c1hi, c[nt - 1] = 0;
-      for (int j = 0; j < nt; ++j) b2[j] = b[j];
       // Thomas for both parts.
       for (int j = 1; j < nt; ++j) {
         const double w = a[j] / b[j - 1];
