@@ -23,7 +23,7 @@
                  every 10) gives bit-identical analysis.tsv and xcfc.tsv on 1 and 2 ranks and after
                  a 1 -> 2 rank restart; a 2D spherical level ending in theta at the origin is reported
   curvilinear3d  the star on a 3D spherical grid (phi periodic): converged solves, bit-identical on 1
-                 and 2 ranks, the initial metric equal to the 2D one; the same refined once inside
+                 and 2 ranks, the initial metric equal to the 2D one (and on a 3D cylindrical grid); the same refined once inside
                  r = 10 (composite solves): converged, bit-identical on 1 and 2 ranks
 """
 import os
@@ -216,6 +216,20 @@ def mode_curvilinear3d(r):
         print("3D spherical 64 x 8 x 16 vs 2D 64 x 8 initial metric, %s: relative difference %.2e" % (col, d))
         assert d < 1e-7, "the 3D initial metric of the star differs from the 2D one (%s)" % col
     print("3D spherical run: solves converged, analysis.tsv and xcfc.tsv bit-identical on 1 and 2 ranks")
+    # 3D cylindrical (R, z, phi) against 2D cylindrical: the initial metric of the same star.
+    cyl = ["Grid::coordinates=cylindrical", "Grid::xmin=[0,0,0]", "Grid::xmax=[20,20,6.283185307179586]",
+           "MoL::max_iterations=0"]
+    c3, _ = mig.run("cyl3d", 1, cyl + ["Grid::dimension=3", "Grid::ncells=[32,32,8]", "Grid::block_size=[16,16,4]",
+                                       "Grid::boundary_lower=[axis,reflect,periodic]",
+                                       "Grid::boundary_upper=[outflow,outflow,periodic]"])
+    c2, _ = mig.run("cyl2d", 1, cyl + ["Grid::ncells=[32,32,1]", "Grid::block_size=[16,16,1]",
+                                       "Grid::boundary_lower=[axis,reflect,outflow]",
+                                       "Grid::boundary_upper=[outflow,outflow,outflow]"])
+    a3c, a2c = columns(os.path.join(c3, "analysis.tsv")), columns(os.path.join(c2, "analysis.tsv"))
+    for col in ("alpha_c", "psi_c", "alpha_min", "psi_max"):
+        d = abs(a3c[col][0] / a2c[col][0] - 1)
+        print("3D cylindrical 32 x 32 x 8 vs 2D 32 x 32 initial metric, %s: relative difference %.2e" % (col, d))
+        assert d < 2e-7, "the 3D cylindrical initial metric differs from the 2D one (%s)" % col  # both solved to 1e-10
     # Refined: one static level over every angle inside r = 10 (whole phi rings and origin shells).
     amr = sph3 + ["Grid::max_level=1", "Grid::regions=[sphere]", "Grid::region_levels=[1]",
                   "Grid::region_bounds=[0,10,0,0,0,0]", "MoL::max_iterations=2"]
