@@ -125,7 +125,7 @@ void factor_line(Level& L, const Lines3& ln, std::size_t q0, std::size_t line, c
 }
 
 // One colour of a linear equation's lines with the factors of factor_lines_3d.
-long long factored_pass(Level& L, const Lines3& ln, int colour) {
+long long factored_pass(Level& L, const Lines3& ln, int colour, std::size_t first, std::size_t last) {
   const GridShape& s = L.shape;
   const Ops o(L);
   double* u = L.u.data();
@@ -140,9 +140,9 @@ long long factored_pass(Level& L, const Lines3& ln, int colour) {
   long long cells = 0;
   for (int t2 = 0; t2 < s.n[ln.e2]; ++t2)
     for (int t1 = 0; t1 < s.n[ln.e1]; ++t1) {
-      if (((t1 + t2) & 1) != colour) continue;
-      const auto [q0, p0] = ln.start(L, t1, t2);
       const std::size_t line = ln.line(L, t1, t2);
+      if (((t1 + t2) & 1) != colour || line < first || line >= last) continue;
+      const auto [q0, p0] = ln.start(L, t1, t2);
       double prev = 0;
       for (int m = 0; m < n; ++m) {
         const std::size_t q = q0 + static_cast<std::size_t>(m) * ln.qd;
@@ -189,9 +189,9 @@ void factor_lines_3d(Level& L, const ScalarEquation& eq) {
   L.factored = true;
 }
 
-long long line_pass_3d(Level& L, const ScalarEquation& eq, int d, int colour) {
+long long line_pass_3d(Level& L, const ScalarEquation& eq, int d, int colour, std::size_t first, std::size_t last) {
   const Lines3 ln(L, d);
-  if (L.factored) return factored_pass(L, ln, colour);
+  if (L.factored) return factored_pass(L, ln, colour, first, last);
   const GridShape& s = L.shape;
   const int n = ln.n;
   const Ops o(L);
@@ -205,9 +205,9 @@ long long line_pass_3d(Level& L, const ScalarEquation& eq, int d, int colour) {
   long long cells = 0;
   for (int t2 = 0; t2 < s.n[ln.e2]; ++t2)
     for (int t1 = 0; t1 < s.n[ln.e1]; ++t1) {
-      if (((t1 + t2) & 1) != colour) continue;
-      const auto [q0, p0] = ln.start(L, t1, t2);
       const std::size_t line = ln.line(L, t1, t2);
+      if (((t1 + t2) & 1) != colour || line < first || line >= last) continue;
+      const auto [q0, p0] = ln.start(L, t1, t2);
       for (int m = 0; m < n; ++m) {
         const std::size_t q = q0 + static_cast<std::size_t>(m) * ln.qd;
         const std::ptrdiff_t p = p0 + m * ln.pd;
@@ -238,6 +238,38 @@ long long line_pass_3d(Level& L, const ScalarEquation& eq, int d, int colour) {
       cells += n;
     }
   return cells;
+}
+
+namespace {
+// Calls f(ghosted offset) for every cell of the lines of one colour in [first, last), in order.
+template <class F>
+void for_line_cells(const Level& L, int d, int colour, std::size_t first, std::size_t last, F&& f) {
+  const Lines3 ln(L, d);
+  const GridShape& s = L.shape;
+  for (int t2 = 0; t2 < s.n[ln.e2]; ++t2)
+    for (int t1 = 0; t1 < s.n[ln.e1]; ++t1) {
+      const std::size_t line = ln.line(L, t1, t2);
+      if (((t1 + t2) & 1) != colour || line < first || line >= last) continue;
+      const std::ptrdiff_t p0 = ln.start(L, t1, t2).second;
+      for (int m = 0; m < ln.n; ++m) f(static_cast<std::size_t>(p0 + m * ln.pd));
+    }
+}
+}  // namespace
+
+std::size_t line_cells_3d(const Level& L, int d, int colour, std::size_t first, std::size_t last) {
+  std::size_t n = 0;
+  for_line_cells(L, d, colour, first, last, [&](std::size_t) { ++n; });
+  return n;
+}
+
+void pack_lines_3d(const Level& L, int d, int colour, std::size_t first, std::size_t last, std::vector<double>& out) {
+  for_line_cells(L, d, colour, first, last, [&](std::size_t p) { out.push_back(L.u[p]); });
+}
+
+std::size_t unpack_lines_3d(Level& L, int d, int colour, std::size_t first, std::size_t last, const std::vector<double>& in,
+                            std::size_t at) {
+  for_line_cells(L, d, colour, first, last, [&](std::size_t p) { L.u[p] = in[at++]; });
+  return at;
 }
 
 }  // namespace remnant::xcfc

@@ -198,16 +198,42 @@ struct Multigrid::Impl {
     }
   }
 
-  // 3D cylindrical and spherical levels (never split between ranks): zebra lines along d.
+  // 3D cylindrical and spherical levels: zebra lines along d. Every rank holds the whole level and
+  // does the rest of the cycle itself; on large levels the lines of each colour are dealt out in
+  // contiguous index ranges and the solved lines gathered by every rank (MPI_Allgatherv), so that
+  // each line is solved from the same inputs as on one rank: the same bits.
   void smooth_lines_3d(std::size_t l, const ScalarEquation& eq, int d) {
     Level& L = levels[l];
+    const int P = work.nranks(), me = work.rank();
+    const bool split = P > 1 && L.cells() >= WorkPartition::kMinCells;
+    const std::size_t lines = L.cells() / static_cast<std::size_t>(L.shape.n[d]);
+    auto cut = [&](int r) { return lines * static_cast<std::size_t>(r) / static_cast<std::size_t>(P); };
     long long n = 0;
     for (int colour = 0; colour < 2; ++colour) {
       fill_ghosts(L, eq, L.u, false);
-      n += line_pass_3d(L, eq, d, colour);
+      if (!split) {
+        n += line_pass_3d(L, eq, d, colour);
+        continue;
+      }
+      n += line_pass_3d(L, eq, d, colour, cut(me), cut(me + 1));
+      line_send.clear();
+      pack_lines_3d(L, d, colour, cut(me), cut(me + 1), line_send);
+      line_counts.assign(static_cast<std::size_t>(P), 0);
+      line_displs.assign(static_cast<std::size_t>(P), 0);
+      for (int r = 0; r < P; ++r) {
+        line_counts[static_cast<std::size_t>(r)] = static_cast<int>(line_cells_3d(L, d, colour, cut(r), cut(r + 1)));
+        if (r > 0) line_displs[static_cast<std::size_t>(r)] = line_displs[static_cast<std::size_t>(r) - 1] + line_counts[static_cast<std::size_t>(r) - 1];
+      }
+      line_recv.resize(static_cast<std::size_t>(line_displs.back() + line_counts.back()));
+      MPI_Allgatherv(line_send.data(), static_cast<int>(line_send.size()), MPI_DOUBLE, line_recv.data(), line_counts.data(),
+                     line_displs.data(), MPI_DOUBLE, work.communicator());
+      std::size_t at = 0;
+      for (int r = 0; r < P; ++r) at = unpack_lines_3d(L, d, colour, cut(r), cut(r + 1), line_recv, at);
     }
     count(l, n);
   }
+  std::vector<double> line_send, line_recv;  // 3D line exchange buffers
+  std::vector<int> line_counts, line_displs;
 
   // Point red-black smoothing in 1D and 3D Cartesian, alternating line smoothing in 2D and on 3D
   // cylindrical and spherical levels (strong phi coupling at the axis, angular at the origin).

@@ -47,6 +47,7 @@ class WorkPartition {
   Range full(std::size_t l) const { return full_range((*lv)[l]); }
 
   double global_max(double m) const;
+  MPI_Comm communicator() const { return comm; }
   // Owned planes (with their in-plane ghosts) of a ghosted or interior array to every rank.
   void replicate(std::size_t l, std::vector<double>& a, bool ghosted) const;
   // The halo planes lo-1 and hi of a ghosted array from the neighbouring ranks (and, where the
