@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <tuple>
 #include <utility>
 
 #include "level_ops.hpp"
@@ -124,52 +125,72 @@ void factor_line(Level& L, const Lines3& ln, std::size_t q0, std::size_t line, c
   L.line_cyclic[2 * line + 1] = 1.0 + z[q_of(0)] + beta / gamma * z[q_of(n - 1)];
 }
 
-// One colour of a linear equation's lines with the factors of factor_lines_3d.
-long long factored_pass(Level& L, const Lines3& ln, int colour, std::size_t first, std::size_t last) {
-  const GridShape& s = L.shape;
-  const Ops o(L);
+// G lines of a linear equation at once with the factors of factor_lines_3d: lines t1, t1 + 2, ...
+// of one row are independent, and interleaving them hides the latency of the serial recurrences
+// and, for the strided theta and phi lines, uses each cache line of u and the coefficients G times
+// (each line's arithmetic is unchanged, so are the bits).
+template <int G>
+void factored_group(Level& L, const Lines3& ln, const Ops& o, const std::size_t* line, const std::size_t* q0,
+                    const std::ptrdiff_t* p0, double* r) {
   double* u = L.u.data();
   const int n = ln.n;
   const double *alo = o.lo[ln.d], *ahi = o.hi[ln.d], *lo1 = o.lo[ln.e1], *hi1 = o.hi[ln.e1], *lo2 = o.lo[ln.e2],
                *hi2 = o.hi[ln.e2];
   const double *w = L.line_w[ln.d].data(), *inv = L.line_inv[ln.d].data();
-  const double* z = ln.cyclic ? L.line_z.data() : nullptr;
   const double *c1lo = L.end_c1[ln.d][0].data(), *c1hi = L.end_c1[ln.d][1].data();
-  L.line_scratch.resize(static_cast<std::size_t>(n));
-  double* r = L.line_scratch.data();
-  long long cells = 0;
-  for (int t2 = 0; t2 < s.n[ln.e2]; ++t2)
-    for (int t1 = 0; t1 < s.n[ln.e1]; ++t1) {
-      const std::size_t line = ln.line(L, t1, t2);
-      if (((t1 + t2) & 1) != colour || line < first || line >= last) continue;
-      const auto [q0, p0] = ln.start(L, t1, t2);
-      double prev = 0;
-      for (int m = 0; m < n; ++m) {
-        const std::size_t q = q0 + static_cast<std::size_t>(m) * ln.qd;
-        const std::ptrdiff_t p = p0 + m * ln.pd;
-        double rhs = o.f[q] + o.s0[q] - (lo1[q] * u[p - ln.pe1] + hi1[q] * u[p + ln.pe1] + lo2[q] * u[p - ln.pe2] + hi2[q] * u[p + ln.pe2]);
-        // Non-cyclic ends: the ghost's part that does not follow the end cell, c0 = ghost - c1 u.
-        if (!ln.cyclic && m == 0) rhs -= alo[q] * (u[p - ln.pd] - c1lo[line] * u[p]);
-        if (!ln.cyclic && m == n - 1) rhs -= ahi[q] * (u[p + ln.pd] - c1hi[line] * u[p]);
-        prev = rhs - w[q] * prev;
-        r[m] = prev;
-      }
-      double x = 0;
-      for (int m = n - 1; m >= 0; --m) {
-        const std::size_t q = q0 + static_cast<std::size_t>(m) * ln.qd;
-        x = (r[m] - (m == n - 1 ? 0.0 : ahi[q] * x)) * inv[q];
-        r[m] = x;
-      }
-      if (ln.cyclic) {
-        const double fact = (r[0] + L.line_cyclic[2 * line] * r[n - 1]) / L.line_cyclic[2 * line + 1];
-        for (int m = 0; m < n; ++m) r[m] -= fact * z[q0 + static_cast<std::size_t>(m) * ln.qd];
-      }
-      for (int m = 0; m < n; ++m) u[p0 + m * ln.pd] = r[m];
-      cells += n;
+  double prev[G] = {};
+  for (int m = 0; m < n; ++m)
+    for (int g = 0; g < G; ++g) {
+      const std::size_t q = q0[g] + static_cast<std::size_t>(m) * ln.qd;
+      const std::ptrdiff_t p = p0[g] + m * ln.pd;
+      double rhs = o.f[q] + o.s0[q] - (lo1[q] * u[p - ln.pe1] + hi1[q] * u[p + ln.pe1] + lo2[q] * u[p - ln.pe2] + hi2[q] * u[p + ln.pe2]);
+      // Non-cyclic ends: the ghost's part that does not follow the end cell, c0 = ghost - c1 u.
+      if (!ln.cyclic && m == 0) rhs -= alo[q] * (u[p - ln.pd] - c1lo[line[g]] * u[p]);
+      if (!ln.cyclic && m == n - 1) rhs -= ahi[q] * (u[p + ln.pd] - c1hi[line[g]] * u[p]);
+      prev[g] = rhs - w[q] * prev[g];
+      r[m * G + g] = prev[g];
     }
-  return cells;
+  double x[G] = {};
+  for (int m = n - 1; m >= 0; --m)
+    for (int g = 0; g < G; ++g) {
+      const std::size_t q = q0[g] + static_cast<std::size_t>(m) * ln.qd;
+      x[g] = (r[m * G + g] - (m == n - 1 ? 0.0 : ahi[q] * x[g])) * inv[q];
+      r[m * G + g] = x[g];
+    }
+  for (int g = 0; g < G; ++g) {
+    if (ln.cyclic) {
+      const double* z = L.line_z.data();
+      const double fact = (r[g] + L.line_cyclic[2 * line[g]] * r[(n - 1) * G + g]) / L.line_cyclic[2 * line[g] + 1];
+      for (int m = 0; m < n; ++m) r[m * G + g] -= fact * z[q0[g] + static_cast<std::size_t>(m) * ln.qd];
+    }
+    for (int m = 0; m < n; ++m) u[p0[g] + m * ln.pd] = r[m * G + g];
+  }
 }
 
+// One colour of a linear equation's lines, in groups of four along each row.
+long long factored_pass(Level& L, const Lines3& ln, int colour, std::size_t first, std::size_t last) {
+  constexpr int G = 4;
+  const GridShape& s = L.shape;
+  const Ops o(L);
+  L.line_scratch.resize(static_cast<std::size_t>(G) * static_cast<std::size_t>(ln.n));
+  double* r = L.line_scratch.data();
+  std::size_t line[G], q0[G];
+  std::ptrdiff_t p0[G];
+  long long cells = 0;
+  for (int t2 = 0; t2 < s.n[ln.e2]; ++t2) {
+    int k = 0;
+    for (int t1 = (colour + t2) & 1; t1 < s.n[ln.e1]; t1 += 2) {
+      const std::size_t l = ln.line(L, t1, t2);
+      if (l < first || l >= last) continue;
+      line[k] = l;
+      std::tie(q0[k], p0[k]) = ln.start(L, t1, t2);
+      if (++k == G) factored_group<G>(L, ln, o, line, q0, p0, r), k = 0;
+      cells += ln.n;
+    }
+    for (int g = 0; g < k; ++g) factored_group<1>(L, ln, o, line + g, q0 + g, p0 + g, r);
+  }
+  return cells;
+}
 }  // namespace
 
 void factor_lines_3d(Level& L, const ScalarEquation& eq) {
