@@ -96,10 +96,9 @@ std::vector<Tier> build_tiers(const CompositeLayout& l, int nranks) {
       T.window_size.push_back(static_cast<std::size_t>(wn[0]) * wn[1] * wn[2]);
     }
   }
-  if (b.dimension == 2)
+  // Line relaxation: 2D, and 3D cylindrical and spherical (3D Cartesian relaxes by points).
+  if (b.dimension == 2 || (b.dimension == 3 && b.coordinates != CoordinateSystem::cartesian))
     for (int t = 1; t <= L; ++t) build_runs(tiers[static_cast<std::size_t>(t)]);
-  if (b.dimension == 3 && b.coordinates != CoordinateSystem::cartesian)
-    for (int t = 1; t <= L; ++t) build_runs_3d(tiers[static_cast<std::size_t>(t)]);
   for (int t = 1; t <= L; ++t) {
     Tier& T = tiers[static_cast<std::size_t>(t)];
     std::vector<std::vector<int>> singles;

@@ -264,7 +264,7 @@ struct CompositeMultigrid::Impl {
       }
     // Runs (and 3D shells): the equation copied from their patches, line ends and factors.
     for (auto& T : tiers) {
-      auto prepare_unit = [&](Tier::Run& R, auto&& copy) {
+      auto prepare_unit = [&](Tier::Run& R) {
         Level& RL = R.level;
         const Level& P0 = T.patches[static_cast<std::size_t>(R.patches.front())];
         for (auto a : {&Level::k_eq, &Level::s0, &Level::s1, &Level::s7}) {
@@ -273,7 +273,7 @@ struct CompositeMultigrid::Impl {
             continue;
           }
           (RL.*a).assign(RL.cells(), 0.0);
-          copy(a);
+          copy_unit<true>(T, R, a, false);
         }
         add_mode_term(RL, eq.boundary.mode);
         RL.f.assign(RL.cells(), 0.0);
@@ -283,13 +283,9 @@ struct CompositeMultigrid::Impl {
         set_line_ends(RL, eq.boundary);
         factor_lines(RL);
       };
-      for (int d = 0; d < 3; ++d)
-        for (auto& R : T.runs[static_cast<std::size_t>(d)])
-          prepare_unit(R, [&](std::vector<double> Level::*a) {
-            if (curvilinear_3d()) copy_unit<true>(T, R, a, false);
-            else copy_run<true>(T, R, d, a, false);
-          });
-      for (auto& R : T.shell) prepare_unit(R, [&](std::vector<double> Level::*a) { copy_unit<true>(T, R, a, false); });
+      for (auto& runs : T.runs)
+        for (auto& R : runs) prepare_unit(R);
+      for (auto& R : T.shell) prepare_unit(R);
     }
     base_eq = eq.boundary;
     const Level& B = tiers[0].patches[0];
@@ -310,35 +306,16 @@ struct CompositeMultigrid::Impl {
         T.patches[p].u[r.target] = evaluate(R, r, par, eq, false, u);
   }
 
-  // Relaxation of a tier's patches: zebra lines in both directions (2D) or red-black points (1D,
-  // 3D), ghosts refilled before each pass and held during it. Each rank relaxes its units (patches
-  // or runs) and the results are exchanged: a unit reads only ghosts and its own cells, so the
-  // bits do not depend on the number of ranks. 2D lines run through whole runs of
-  // patches (a row split into patches is one line); both colours of a pass are solved on the run's
-  // copy. (Exact line solves of whole 1D patches with held ends would leave kinks at the patch ends
-  // that the coarse correction removes slowly: points converge at 0.1-0.2 per cycle instead.)
+  // Relaxation of a tier's patches: red-black points (1D, 3D Cartesian) or zebra lines along runs of
+  // patches in every direction (2D, 3D cylindrical and spherical; a row split into patches is one
+  // line), ghosts refilled before each pass and held during it, both colours of a pass solved on
+  // the run's copy. Each rank relaxes its units (patches or runs) and the results are exchanged: a
+  // unit reads only ghosts and its own cells, so the bits do not depend on the number of ranks.
+  // (Exact line solves of whole 1D patches with held ends would leave kinks at the patch ends that
+  // the coarse correction removes slowly: points converge at 0.1-0.2 per cycle instead.)
   void relax(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
     Tier& T = tiers[static_cast<std::size_t>(t)];
-    if (t > 0 && curvilinear_3d()) return relax_curvilinear_3d(t, eq, par, sweeps);
-    if (T.shape.dimension == 2) {
-      for (int d = 0; d < 2; ++d)
-        for (auto& R : T.runs[static_cast<std::size_t>(d)]) copy_run<true>(T, R, d, &Level::f, false);
-      for (int sweep = 0; sweep < sweeps; ++sweep)
-        for (int d = 0; d < 2; ++d) {
-          fill(t, eq, par);
-          const auto& S = T.lines[static_cast<std::size_t>(d)];
-          const auto [u0, u1] = mine(S);
-          for (std::size_t u = u0; u < u1; ++u) {
-            auto& R = T.runs[static_cast<std::size_t>(d)][u];
-            copy_run<true>(T, R, d, &Level::u, true);
-            const Lines ln(R.level, d);
-            for (int colour = 0; colour < 2; ++colour) count(t, line_pass(R.level, ln, colour, 0, ln.count));
-            copy_run<false>(T, R, d, &Level::u, false);
-          }
-          exchange(T, S);
-        }
-      return;
-    }
+    if (T.shape.dimension == 2 || curvilinear_3d()) return relax_lines(t, eq, par, sweeps);
     const auto [u0, u1] = mine(T.points);
     for (int sweep = 0; sweep < sweeps; ++sweep)
       for (int colour = 0; colour < 2; ++colour) {
@@ -351,23 +328,31 @@ struct CompositeMultigrid::Impl {
       }
   }
 
-  // 3D cylindrical and spherical tiers: zebra lines along runs in r, theta (z) and phi, then the
-  // origin's complete shells as planes (every rank does those: they are few and the tier is
-  // complete on every rank after the line passes).
-  void relax_curvilinear_3d(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
+  // Zebra lines along the runs of each direction, then (3D spherical) the origin's complete shells
+  // as planes; every rank does the shells (they are few, and the tier is complete on every rank
+  // after the line passes).
+  void relax_lines(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
     Tier& T = tiers[static_cast<std::size_t>(t)];
+    const int dims = T.shape.dimension;
     for (auto& runs : T.runs)
       for (auto& R : runs) copy_unit<true>(T, R, &Level::f, false);
     for (auto& R : T.shell) copy_unit<true>(T, R, &Level::f, false);
     for (int sweep = 0; sweep < sweeps; ++sweep)
-      for (int d = 0; d < 3; ++d) {
+      for (int d = 0; d < dims; ++d) {
         fill(t, eq, par);
         const auto& S = T.lines[static_cast<std::size_t>(d)];
         const auto [u0, u1] = mine(S);
         for (std::size_t u = u0; u < u1; ++u) {
           auto& R = T.runs[static_cast<std::size_t>(d)][u];
           copy_unit<true>(T, R, &Level::u, true);
-          for (int colour = 0; colour < 2; ++colour) count(t, line_pass_3d(R.level, eq, d, colour));
+          for (int colour = 0; colour < 2; ++colour) {
+            if (dims == 2) {
+              const Lines ln(R.level, d);
+              count(t, line_pass(R.level, ln, colour, 0, ln.count));
+            } else {
+              count(t, line_pass_3d(R.level, eq, d, colour));
+            }
+          }
           copy_unit<false>(T, R, &Level::u, false);
         }
         exchange(T, S);

@@ -52,34 +52,9 @@ void exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank, int 
 }
 
 void build_runs(Tier& T) {
-  for (int d = 0; d < 2; ++d) {
-    const int e = 1 - d;
-    std::map<std::pair<long long, long long>, int> order;  // (transverse, along) block -> patch
-    for (std::size_t p = 0; p < T.corner.size(); ++p)
-      order[{T.corner[p][e] / T.nb[e], T.corner[p][d] / T.nb[d]}] = static_cast<int>(p);
-    std::vector<int> run;
-    long long row = -1, last = -2;
-    auto close = [&] {
-      if (run.empty()) return;
-      GridShape s = T.patches[static_cast<std::size_t>(run.front())].shape;
-      s.n[d] = T.nb[d] * static_cast<int>(run.size());
-      s.boundary[d][1] = T.patches[static_cast<std::size_t>(run.back())].shape.boundary[d][1];
-      T.runs[static_cast<std::size_t>(d)].push_back({run, Level(s)});
-      run.clear();
-    };
-    for (const auto& [k, p] : order) {
-      if (k.first != row || k.second != last + 1) close();
-      row = k.first, last = k.second;
-      run.push_back(p);
-    }
-    close();
-  }
-}
-
-void build_runs_3d(Tier& T) {
-  for (int d = 0; d < 3; ++d) {
+  for (int d = 0; d < T.shape.dimension; ++d) {
     const int e1 = (d + 1) % 3, e2 = (d + 2) % 3;
-    std::map<std::array<long long, 3>, int> order;  // (transverse blocks, along block) -> patch
+    std::map<std::array<long long, 3>, int> order;  // (transverse blocks, along block) -> patch (unused: 0)
     for (std::size_t p = 0; p < T.corner.size(); ++p)
       order[{T.corner[p][e1] / T.nb[e1], T.corner[p][e2] / T.nb[e2], T.corner[p][d] / T.nb[d]}] = static_cast<int>(p);
     std::vector<int> run;

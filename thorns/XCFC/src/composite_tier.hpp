@@ -35,7 +35,7 @@ struct Tier {
   struct Run {
     std::vector<int> patches;  // in order along d
     Level level;
-    std::vector<std::array<int, 3>> offset;  // 3D: each patch's first cell in the run's Level
+    std::vector<std::array<int, 3>> offset;  // each patch's first cell in the run's Level
   };
   std::array<std::vector<Run>, 3> runs;
   // 3D spherical: the complete shells of patches next to the origin (every theta and phi block of
@@ -62,26 +62,25 @@ inline std::pair<std::size_t, std::size_t> owned_units(const Tier::Split& S, int
 }
 // After a pass: every rank receives the patch interiors its partners updated (MPI_Allgatherv).
 void exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank, int nranks);
-// The runs of both directions of a 2D tier.
+// The runs of every direction of a tier (2D, and 3D cylindrical or spherical), and a 3D spherical
+// tier's origin shells.
 void build_runs(Tier& T);
-// The runs of the three directions of a 3D cylindrical or spherical tier, and its origin shells.
-void build_runs_3d(Tier& T);
 
-// Copies between a 3D unit (a run or the shell Level) and its patches: interior cells, and with
+// Copies between a unit (a run or the shell Level) and its patches: interior cells, and with
 // `ghosts` (towards the unit only) the patches' face ghosts that are the unit's own ghosts. `array`
 // is Level::u (ghosted) or an interior array.
 template <bool ToUnit>
 void copy_unit(Tier& T, Tier::Run& R, std::vector<double> Level::*array, bool ghosts) {
   Level& U = R.level;
   const auto& un = U.shape.n;
-  const int g = ghosts ? 1 : 0;
   for (std::size_t m = 0; m < R.patches.size(); ++m) {
     Level& P = T.patches[static_cast<std::size_t>(R.patches[m])];
     const auto& n = P.shape.n;
     const auto& o = R.offset[m];
-    for (int k = -g; k < n[2] + g; ++k)
-      for (int j = -g; j < n[1] + g; ++j)
-        for (int i = -g; i < n[0] + g; ++i) {
+    const std::array<int, 3> g{ghosts ? P.g[0] : 0, ghosts ? P.g[1] : 0, ghosts ? P.g[2] : 0};
+    for (int k = -g[2]; k < n[2] + g[2]; ++k)
+      for (int j = -g[1]; j < n[1] + g[1]; ++j)
+        for (int i = -g[0]; i < n[0] + g[0]; ++i) {
           const int out = (i < 0 || i >= n[0]) + (j < 0 || j >= n[1]) + (k < 0 || k >= n[2]);
           if (out > 1) continue;  // edges and corners: no stencil reads them
           const int a = o[0] + i, b = o[1] + j, c = o[2] + k;
@@ -97,39 +96,6 @@ void copy_unit(Tier& T, Tier::Run& R, std::vector<double> Level::*array, bool gh
             if constexpr (ToUnit) y = x; else x = y;
           }
         }
-  }
-}
-
-// Copies between a run and its patches: interior cells with the transverse ghosts and the run's end
-// ghosts (ToRun, ghosts); interior cells only (otherwise). `array` is Level::u (ghosted) or an
-// interior array.
-template <bool ToRun>
-void copy_run(Tier& T, Tier::Run& R, int d, std::vector<double> Level::*array, bool ghosts) {
-  const int e = 1 - d;
-  Level& RL = R.level;
-  for (std::size_t m = 0; m < R.patches.size(); ++m) {
-    Level& P = T.patches[static_cast<std::size_t>(R.patches[m])];
-    const int n_d = P.shape.n[d], n_e = P.shape.n[e];
-    const int a0 = (ghosts && m == 0) ? -1 : 0, a1 = (ghosts && m + 1 == R.patches.size()) ? n_d + 1 : n_d;
-    const int b0 = ghosts ? -1 : 0, b1 = ghosts ? n_e + 1 : n_e;
-    for (int b = b0; b < b1; ++b)
-      for (int a = a0; a < a1; ++a) {
-        if ((a < 0 || a >= n_d) && (b < 0 || b >= n_e)) continue;  // corners
-        std::array<int, 2> pl{}, rl{};
-        pl[d] = a, pl[e] = b;
-        rl[d] = a + static_cast<int>(m) * n_d, rl[e] = b;
-        const bool interior = a >= 0 && a < n_d && b >= 0 && b < n_e;
-        if (!ghosts && !interior) continue;
-        if (array == &Level::u) {
-          double& x = P.u[static_cast<std::size_t>(P.at(pl[0], pl[1], 0))];
-          double& y = RL.u[static_cast<std::size_t>(RL.at(rl[0], rl[1], 0))];
-          if constexpr (ToRun) y = x; else x = y;
-        } else if (interior) {
-          double& x = (P.*array)[P.cell(pl[0], pl[1], 0)];
-          double& y = (RL.*array)[RL.cell(rl[0], rl[1], 0)];
-          if constexpr (ToRun) y = x; else x = y;
-        }
-      }
   }
 }
 
