@@ -8,37 +8,19 @@
 #include "level_ops.hpp"
 
 namespace remnant::xcfc {
-namespace {
 
-// Thomas algorithm for a[m] x[m-1] + b[m] x[m] + c[m] x[m+1] = r[m] (a[0] and c[n-1] unused): the
-// solution replaces r, b is overwritten by the inverse pivots (one division per row).
-void thomas(int n, const double* a, double* b, const double* c, double* r) {
+void thomas_factor(int n, const double* a, double* b, const double* c) {
   b[0] = 1.0 / b[0];
-  for (int m = 1; m < n; ++m) {
-    const double w = a[m] * b[m - 1];
-    b[m] = 1.0 / (b[m] - w * c[m - 1]);
-    r[m] -= w * r[m - 1];
-  }
+  for (int m = 1; m < n; ++m) b[m] = 1.0 / (b[m] - a[m] * b[m - 1] * c[m - 1]);
+}
+
+void thomas_solve(int n, const double* a, const double* b, const double* c, double* r) {
+  for (int m = 1; m < n; ++m) r[m] -= a[m] * b[m - 1] * r[m - 1];
   r[n - 1] *= b[n - 1];
   for (int m = n - 2; m >= 0; --m) r[m] = (r[m] - c[m] * r[m + 1]) * b[m];
 }
 
-// The cyclic system (row 0 couples x[n-1] by a[0], row n-1 couples x[0] by c[n-1]), n >= 3, by
-// Sherman-Morrison: two Thomas solves of the tridiagonal part with corrected corner pivots.
-void cyclic_thomas(int n, const double* a, double* b, const double* c, double* r, double* z, double* b2) {
-  const double gamma = -b[0], beta = a[0], alpha = c[n - 1];
-  b[0] -= gamma;
-  b[n - 1] -= alpha * beta / gamma;
-  for (int m = 0; m < n; ++m) b2[m] = b[m], z[m] = 0.0;
-  z[0] = gamma, z[n - 1] = alpha;
-  thomas(n, a, b, c, r);
-  thomas(n, a, b2, c, z);
-  const double fact = (r[0] + beta * r[n - 1] / gamma) / (1.0 + z[0] + beta * z[n - 1] / gamma);
-  for (int m = 0; m < n; ++m) r[m] -= fact * z[m];
-}
-
-// The line's end ghost as c0 + c1 u_end: c1 of the face (c0 is the current ghost's remainder).
-double end_factor(const Level& L, const ScalarEquation& eq, int d, int side, std::size_t face_index) {
+double line_end_factor(const Level& L, const ScalarEquation& eq, int d, int side, std::size_t face_index) {
   switch (L.shape.boundary[d][side]) {
     case Boundary::outer:
       if (eq.dirichlet) return -1.0;
@@ -48,6 +30,24 @@ double end_factor(const Level& L, const ScalarEquation& eq, int d, int side, std
     case Boundary::reflect: return eq.parity[d][side];  // the mirror is the end cell itself
     default: return 0.0;  // axis, origin (another line's cell, behind a face of zero area), interface
   }
+}
+
+namespace {
+
+// The cyclic system (row 0 couples x[n-1] by a[0], row n-1 couples x[0] by c[n-1]), n >= 3, by
+// Sherman-Morrison: the tridiagonal part with corrected corner pivots, factorised once and solved
+// for r and for the corner vector z.
+void cyclic_thomas(int n, const double* a, double* b, const double* c, double* r, double* z) {
+  const double gamma = -b[0], beta = a[0], alpha = c[n - 1];
+  b[0] -= gamma;
+  b[n - 1] -= alpha * beta / gamma;
+  for (int m = 0; m < n; ++m) z[m] = 0.0;
+  z[0] = gamma, z[n - 1] = alpha;
+  thomas_factor(n, a, b, c);
+  thomas_solve(n, a, b, c, r);
+  thomas_solve(n, a, b, c, z);
+  const double fact = (r[0] + beta * r[n - 1] / gamma) / (1.0 + z[0] + beta * z[n - 1] / gamma);
+  for (int m = 0; m < n; ++m) r[m] -= fact * z[m];
 }
 
 // Line geometry along d: the transverse directions, strides and the cyclic flag.
@@ -91,7 +91,7 @@ void factor_line(Level& L, const Lines3& ln, std::size_t q0, std::size_t line, c
     b0 -= gamma;
     bn -= alpha * beta / gamma;
   } else {
-    const double c1lo = end_factor(L, eq, ln.d, 0, line), c1hi = end_factor(L, eq, ln.d, 1, line);
+    const double c1lo = line_end_factor(L, eq, ln.d, 0, line), c1hi = line_end_factor(L, eq, ln.d, 1, line);
     L.end_c1[ln.d][0][line] = c1lo, L.end_c1[ln.d][1][line] = c1hi;
     b0 += alo[q_of(0)] * c1lo;
     bn += ahi[q_of(n - 1)] * c1hi;
@@ -221,8 +221,8 @@ long long line_pass_3d(Level& L, const ScalarEquation& eq, int d, int colour, st
   const double *alo = o.lo[d], *ahi = o.hi[d], *lo1 = o.lo[ln.e1], *hi1 = o.hi[ln.e1], *lo2 = o.lo[ln.e2],
                *hi2 = o.hi[ln.e2];
   const auto nn = static_cast<std::size_t>(n);
-  L.line_scratch.resize(6 * nn);
-  double *a = L.line_scratch.data(), *b = a + nn, *c = b + nn, *r = c + nn, *z = r + nn, *b2 = z + nn;
+  L.line_scratch.resize(5 * nn);
+  double *a = L.line_scratch.data(), *b = a + nn, *c = b + nn, *r = c + nn, *z = r + nn;
   long long cells = 0;
   for (int t2 = 0; t2 < s.n[ln.e2]; ++t2)
     for (int t1 = 0; t1 < s.n[ln.e1]; ++t1) {
@@ -239,17 +239,21 @@ long long line_pass_3d(Level& L, const ScalarEquation& eq, int d, int colour, st
         double di = -o.diag[q] - dR;
         a[m] = alo[q], c[m] = ahi[q];
         if (!ln.cyclic && m == 0) {
-          const double c1 = end_factor(L, eq, d, 0, line);
+          const double c1 = line_end_factor(L, eq, d, 0, line);
           rhs -= a[m] * (u[p - ln.pd] - c1 * u0), di += a[m] * c1, a[m] = 0.0;
         }
         if (!ln.cyclic && m == n - 1) {
-          const double c1 = end_factor(L, eq, d, 1, line);
+          const double c1 = line_end_factor(L, eq, d, 1, line);
           rhs -= c[m] * (u[p + ln.pd] - c1 * u0), di += c[m] * c1, c[m] = 0.0;
         }
         b[m] = di, r[m] = rhs;
       }
-      if (ln.cyclic) cyclic_thomas(n, a, b, c, r, z, b2);
-      else thomas(n, a, b, c, r);
+      if (ln.cyclic) {
+        cyclic_thomas(n, a, b, c, r, z);
+      } else {
+        thomas_factor(n, a, b, c);
+        thomas_solve(n, a, b, c, r);
+      }
       for (int m = 0; m < n; ++m) {
         double& um = u[p0 + m * ln.pd];
         double un = r[m];

@@ -25,6 +25,16 @@ void pack_lines_3d(const Level& L, int d, int colour, std::size_t first, std::si
 std::size_t unpack_lines_3d(Level& L, int d, int colour, std::size_t first, std::size_t last, const std::vector<double>& in,
                             std::size_t at);
 
+// Thomas algorithm for a[m] x[m-1] + b[m] x[m] + c[m] x[m+1] = r[m] (a[0] and c[n-1] unused):
+// thomas_factor overwrites b by the inverse pivots, thomas_solve (any number of times) replaces r
+// by the solution.
+void thomas_factor(int n, const double* a, double* b, const double* c);
+void thomas_solve(int n, const double* a, const double* b, const double* c, double* r);
+
+// The ghost beyond face (d, side) as c0 + c1 u_end of the adjacent cell: c1 (Robin ratio,
+// -1 Dirichlet, the parity of a reflection onto the cell itself; 0: the ghost is held).
+double line_end_factor(const Level& L, const ScalarEquation& eq, int d, int side, std::size_t face_index);
+
 // Linear equations (no s1, s7): the Thomas factors of every line, kept on the level for the
 // passes of one solve (sets L.factored; nonlinear equations are linearised per pass instead).
 void factor_lines_3d(Level& L, const ScalarEquation& eq);

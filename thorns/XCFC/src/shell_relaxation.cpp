@@ -5,24 +5,9 @@
 #include <numbers>
 
 #include "level_ops.hpp"
+#include "line_relaxation_3d.hpp"
 
 namespace remnant::xcfc {
-namespace {
-
-// The plane correction's ghost beyond a theta face as a multiple of the end cell's correction.
-double theta_end_factor(const Level& L, const ScalarEquation& eq, int side, std::size_t face_index) {
-  switch (L.shape.boundary[1][side]) {
-    case Boundary::reflect: return eq.parity[1][side];
-    case Boundary::outer:
-      if (eq.dirichlet) return -1.0;
-      if (eq.falloff == 1.0) return L.robin1[1][side][face_index];
-      if (eq.falloff == 2.0) return L.robin2[1][side][face_index];
-      return std::pow(L.robin1[1][side][face_index], eq.falloff);
-    default: return 0.0;  // the axis: a face of zero area
-  }
-}
-
-}  // namespace
 
 int angular_shells(const Level& L) {
   const GridShape& s = L.shape;
@@ -88,18 +73,13 @@ long long relax_inner_shells(Level& L, const ScalarEquation& eq, int shells) {
         b[j] = 2 * aphi * L.dft_cos[static_cast<std::size_t>(m) * NP + 1] - o.diag[q] - dRbar[j];
       }
       // Theta ends (faces indexed k + n_phi i: the row's k = 0 entry, every k alike).
-      const double c1lo = theta_end_factor(L, eq, 0, NP * static_cast<std::size_t>(i));
-      const double c1hi = theta_end_factor(L, eq, 1, NP * static_cast<std::size_t>(i));
+      const double c1lo = line_end_factor(L, eq, 1, 0, NP * static_cast<std::size_t>(i));
+      const double c1hi = line_end_factor(L, eq, 1, 1, NP * static_cast<std::size_t>(i));
       b[0] += a[0] * c1lo, a[0] = 0;
       b[nt - 1] += c[nt - 1] * c1hi, c[nt - 1] = 0;
-      // Thomas for both parts.
-      for (int j = 1; j < nt; ++j) {
-        const double w = a[j] / b[j - 1];
-        b[j] -= w * c[j - 1];
-        re[j] -= w * re[j - 1], im[j] -= w * im[j - 1];
-      }
-      re[nt - 1] /= b[nt - 1], im[nt - 1] /= b[nt - 1];
-      for (int j = nt - 2; j >= 0; --j) re[j] = (re[j] - c[j] * re[j + 1]) / b[j], im[j] = (im[j] - c[j] * im[j + 1]) / b[j];
+      thomas_factor(nt, a, b, c);
+      thomas_solve(nt, a, b, c, re);
+      thomas_solve(nt, a, b, c, im);
       for (int j = 0; j < nt; ++j) out[j] = re[j], out[NT + static_cast<std::size_t>(j)] = im[j];
     }
     // Inverse DFT and the update.
