@@ -84,6 +84,7 @@ struct Multigrid::Impl {
             C.restrict_volume[C.cell(i / F.ratio[0], j / F.ratio[1], k / F.ratio[2])] += F.volume[F.cell(i, j, k)];
     }
     work.build(levels);
+    line_splits.resize(levels.size());
   }
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
@@ -218,22 +219,30 @@ struct Multigrid::Impl {
       n += line_pass_3d(L, eq, d, colour, cut(me), cut(me + 1));
       line_send.clear();
       pack_lines_3d(L, d, colour, cut(me), cut(me + 1), line_send);
-      line_counts.assign(static_cast<std::size_t>(P), 0);
-      line_displs.assign(static_cast<std::size_t>(P), 0);
-      for (int r = 0; r < P; ++r) {
-        line_counts[static_cast<std::size_t>(r)] = static_cast<int>(line_cells_3d(L, d, colour, cut(r), cut(r + 1)));
-        if (r > 0) line_displs[static_cast<std::size_t>(r)] = line_displs[static_cast<std::size_t>(r) - 1] + line_counts[static_cast<std::size_t>(r) - 1];
+      // Cells per rank of this level, direction and colour (geometry: counted once).
+      LineSplit& split = line_splits[l][static_cast<std::size_t>(d)][static_cast<std::size_t>(colour)];
+      if (split.counts.empty()) {
+        split.counts.assign(static_cast<std::size_t>(P), 0);
+        split.displs.assign(static_cast<std::size_t>(P), 0);
+        for (int r = 0; r < P; ++r) {
+          const auto u = static_cast<std::size_t>(r);
+          split.counts[u] = static_cast<int>(line_cells_3d(L, d, colour, cut(r), cut(r + 1)));
+          if (r > 0) split.displs[u] = split.displs[u - 1] + split.counts[u - 1];
+        }
       }
-      line_recv.resize(static_cast<std::size_t>(line_displs.back() + line_counts.back()));
-      MPI_Allgatherv(line_send.data(), static_cast<int>(line_send.size()), MPI_DOUBLE, line_recv.data(), line_counts.data(),
-                     line_displs.data(), MPI_DOUBLE, work.communicator());
+      line_recv.resize(static_cast<std::size_t>(split.displs.back() + split.counts.back()));
+      MPI_Allgatherv(line_send.data(), static_cast<int>(line_send.size()), MPI_DOUBLE, line_recv.data(), split.counts.data(),
+                     split.displs.data(), MPI_DOUBLE, work.communicator());
       std::size_t at = 0;
       for (int r = 0; r < P; ++r) at = unpack_lines_3d(L, d, colour, cut(r), cut(r + 1), line_recv, at);
     }
     count(l, n);
   }
   std::vector<double> line_send, line_recv;  // 3D line exchange buffers
-  std::vector<int> line_counts, line_displs;
+  struct LineSplit {
+    std::vector<int> counts, displs;  // MPI_Allgatherv layout of the solved lines
+  };
+  std::vector<std::array<std::array<LineSplit, 2>, 3>> line_splits;  // [level][direction][colour]
 
   // Point red-black smoothing in 1D and 3D Cartesian, alternating line smoothing in 2D and on 3D
   // cylindrical and spherical levels (strong phi coupling at the axis, angular at the origin).
