@@ -11,6 +11,7 @@
 #include <fstream>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <sstream>
 
 #include "XCFC/xcfc_system.hpp"
@@ -110,10 +111,17 @@ Sources gather_sources(const GridBridge& br, const MatterGroups& g) {
 // The warm starts: the last solve's psi, alpha psi and potentials, or, once two solves are recorded,
 // their linear extrapolation in time to now (w = (t - t_last) / (t_last - t_before)): the change
 // between solves is then left to second order, which saves V-cycles (README, "Cadence").
-void load_warm_start(Context& ctx, const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st) {
+// The weight w of last + w (last - before) at the current time, or none before two solves.
+std::optional<double> extrapolation_weight(const Context& ctx) {
   const Runtime& rt = runtime();
-  const bool extrapolate = rt.history >= 2 && rt.t_last > rt.t_before && ctx.time() > rt.t_last;
-  const double w = extrapolate ? (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before) : 0.0;
+  if (rt.history < 2 || !(rt.t_last > rt.t_before)) return std::nullopt;
+  return (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before);
+}
+
+void load_warm_start(Context& ctx, const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st) {
+  const std::optional<double> weight = extrapolation_weight(ctx);
+  const bool extrapolate = weight && *weight > 0;
+  const double w = extrapolate ? *weight : 0.0;
   const int hist = ctx.var("XCFC::metric_history"), before = ctx.var("XCFC::potentials_before");
   // last + w (last - before) of two fields of a block, per cell.
   auto extrapolated = [w](Field last, Field prev) {
@@ -216,9 +224,9 @@ void record_history(Context& ctx) {
 // evolved ones). Holding the metric instead lags gravity by half a solve interval on average, which
 // acts as a damping force on the stellar oscillations (README, "Cadence").
 void extrapolate(Context& ctx) {
-  const Runtime& rt = runtime();
-  if (rt.history < 2 || !(rt.t_last > rt.t_before)) return;
-  const double w = (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before);
+  const std::optional<double> weight = extrapolation_weight(ctx);
+  if (!weight) return;
+  const double w = *weight;
   const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
   for (Block* b : ctx.grid().local_blocks())
     for (int c = 0; c < 5; ++c) {
