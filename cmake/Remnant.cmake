@@ -19,6 +19,7 @@ function(remnant_thorn name)
     message(FATAL_ERROR "thorn ${name}: ${yaml} is missing")
   endif()
   set_property(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR} APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${yaml})
+  _remnant_thorn_views(${name} ${target} ${yaml})
   file(READ ${yaml} text)
   if(NOT text MATCHES "(^|\n)thorn:[ \t]*${name}[ \t]*(#[^\n]*)?(\n|$)")
     message(FATAL_ERROR "${yaml}: the 'thorn:' key must be '${name}', the folder's name")
@@ -29,6 +30,27 @@ function(remnant_thorn name)
   set_property(GLOBAL PROPERTY REMNANT_THORN_${name}_YAML ${yaml})
   set_property(GLOBAL PROPERTY REMNANT_THORN_${name}_PROVIDES "${provides}")
   set_property(GLOBAL PROPERTY REMNANT_THORN_${name}_REQUIRES "${requires}")
+endfunction()
+
+# Named views: <remnant/vars/<Name>.hpp> is generated from thorn.yaml by remnant-genviews. Every
+# thorn library sees every thorn's header (GRMHD reads Spacetime::metric through it), so each
+# waits for all of them (the target remnant_views, made in the top-level CMakeLists.txt).
+function(_remnant_thorn_views name target yaml)
+  set(dir ${CMAKE_BINARY_DIR}/generated/views)
+  set(header ${dir}/remnant/vars/${name}.hpp)
+  set(stamp ${CMAKE_CURRENT_BINARY_DIR}/views_${name}.stamp)
+  file(RELATIVE_PATH rel ${CMAKE_SOURCE_DIR} ${yaml})
+  add_custom_command(OUTPUT ${stamp}
+    COMMAND ${CMAKE_COMMAND} -E make_directory ${dir}/remnant/vars
+    COMMAND remnant-genviews ${yaml} ${header} ${rel}
+    COMMAND ${CMAKE_COMMAND} -E touch ${stamp}
+    BYPRODUCTS ${header}
+    DEPENDS ${yaml} remnant-genviews
+    COMMENT "Generating the named views of ${name} from ${rel}")
+  add_custom_target(views_${name} DEPENDS ${stamp})
+  set_property(GLOBAL APPEND PROPERTY REMNANT_VIEW_TARGETS views_${name})
+  target_include_directories(${target} PUBLIC ${dir})
+  add_dependencies(${target} remnant_views)
 endfunction()
 
 # Parses `key: [a, b, c]` (the list may span lines) from a YAML text; empty when absent.

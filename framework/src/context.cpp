@@ -1,5 +1,6 @@
 #include "remnant/context.hpp"
 
+#include <algorithm>
 #include <iostream>
 
 namespace remnant {
@@ -14,6 +15,13 @@ int Context::var(const std::string& full_name) const {
   const int id = vars_->find(full_name);
   if (id < 0) throw RunError("no variable group named '" + full_name + "' (is its thorn active?)");
   return id;
+}
+
+void Context::check_declared(int group) const {
+  if (std::binary_search(declared_groups_->begin(), declared_groups_->end(), group)) return;
+  throw RunError("debug check: " + current_thorn_ + "::" + current_function_ + " accesses " +
+                 vars_->group(group).full_name() +
+                 ", which its schedule entry does not declare in 'reads' or 'writes' (thorn.yaml)");
 }
 
 GridDriver& Context::grid() const {

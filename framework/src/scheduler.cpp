@@ -259,6 +259,11 @@ std::vector<ScheduleNode> Scheduler::build_container(const std::string& containe
       for (const auto& w : it->writes)
         for (int id : resolve_access(w, it->thorn, vars))
           (w.region == Region::everywhere ? node.writes_everywhere : node.writes_interior).push_back(id);
+      node.declared = node.reads;
+      node.declared.insert(node.declared.end(), node.writes_interior.begin(), node.writes_interior.end());
+      node.declared.insert(node.declared.end(), node.writes_everywhere.begin(), node.writes_everywhere.end());
+      std::sort(node.declared.begin(), node.declared.end());
+      node.declared.erase(std::unique(node.declared.begin(), node.declared.end()), node.declared.end());
     }
     if (!it->every_param.empty()) {
       const ParamSpec* spec = params.find(it->every_thorn, it->every_param);
@@ -396,7 +401,19 @@ void Scheduler::call_function(ScheduleNode& node, Context& ctx) {
     }
   }
 
-  node.fn(ctx);
+  if (debug_) {
+    // Views of undeclared groups throw while the function runs; nested bins restore the outer set.
+    const std::vector<int>* outer = ctx.set_declared_groups(&node.declared);
+    try {
+      node.fn(ctx);
+    } catch (...) {
+      ctx.set_declared_groups(outer);
+      throw;
+    }
+    ctx.set_declared_groups(outer);
+  } else {
+    node.fn(ctx);
+  }
 
   if (debug_ && ctx.has_grid()) {
     auto blocks = ctx.grid().local_blocks();

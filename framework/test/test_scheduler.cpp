@@ -1,5 +1,7 @@
 #include "remnant/scheduler.hpp"
 
+#include "remnant/group_view.hpp"
+
 #include <limits>
 
 #include "test_helpers.hpp"
@@ -286,4 +288,50 @@ schedule:
   Context ctx(h.params, h.vars, MPI_COMM_WORLD);
   s.run_bin("evol", ctx);
   EXPECT_EQ(h.calls, (std::vector<std::string>{"L::CalcRHS", "L::Update", "L::PostStep"}));
+}
+
+TEST(Scheduler, DebugViewOfUndeclaredGroupIsAnErrorNamingFunctionAndGroup) {
+  Harness h{R"Y(thorn: E
+variables:
+  - {group: u, tensor: [scalar u]}
+  - {group: v, tensor: [scalar v]}
+schedule:
+  - {function: Fine, in: initial, reads: [u], description: views only what it declares}
+  - {function: Peek, in: evol, reads: [u], description: views v without declaring it}
+)Y"};
+  h.impl.functions["E::Fine"] = [](Context& c) {
+    for (Block* b : c.grid().local_blocks()) (void)GroupView(c, *b, "E::u", 1);
+  };
+  h.impl.functions["E::Peek"] = [](Context& c) {
+    for (Block* b : c.grid().local_blocks()) (void)GroupView(c, *b, "E::v", 1);
+  };
+  Context ctx(h.params, h.vars, MPI_COMM_WORLD);
+  RecordingGrid grid(h.vars);
+  ctx.set_grid(&grid);
+  {
+    Scheduler s = h.make();  // without --debug the access is not checked
+    EXPECT_NO_THROW(s.run_bin("evol", ctx));
+  }
+  Scheduler s = h.make();
+  s.set_debug(true);
+  EXPECT_NO_THROW(s.run_bin("initial", ctx));
+  expect_error<RunError>([&] { s.run_bin("evol", ctx); }, {"E::Peek accesses E::v", "does not declare"});
+  // After the failed call no check is left behind for code outside scheduled functions.
+  EXPECT_NO_THROW((void)GroupView(ctx, *grid.blocks_[0], "E::v", 1));
+}
+
+TEST(GroupView, AddressesTheBlocksComponentsAndChecksTheirCount) {
+  Harness h{R"Y(thorn: F
+variables:
+  - {group: w, tensor: [scalar a, vector b, tensor_dd g]}
+)Y"};
+  RecordingGrid grid(h.vars);
+  Block& b = *grid.blocks_[0];
+  const GroupView view(b, 0, 10);
+  for (int c = 0; c < 10; ++c) EXPECT_EQ(&view(c, 2, 0, 0), &b.field(0, c)(2, 0, 0));
+  EXPECT_EQ(&view.field(4).operator()(-1, 0, 0), &b.field(0, 4)(-1, 0, 0));
+  EXPECT_EQ(symmetric_index(2, 1), 4);
+  EXPECT_EQ(symmetric_index(0, 0), 0);
+  EXPECT_EQ(symmetric_index(2, 2), 5);
+  expect_error<RunError>([&] { (void)GroupView(b, 0, 9); }, {"expects 9 components", "holds 10"});
 }

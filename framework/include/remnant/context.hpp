@@ -36,6 +36,17 @@ class Context {
   const VariableRegistry& vars() const { return *vars_; }
   // Group id for "Thorn::group"; throws RunError when absent.
   int var(const std::string& full_name) const;
+  // In --debug runs the scheduler sets the groups (sorted ids) that the running function declares in
+  // reads:/writes:; a view of any other group is then an error naming the function and the group.
+  // nullptr: no check. Returns the previous setting (nested bins restore it).
+  const std::vector<int>* set_declared_groups(const std::vector<int>* groups) {
+    const std::vector<int>* previous = declared_groups_;
+    declared_groups_ = groups;
+    return previous;
+  }
+  void check_access(int group) const {
+    if (declared_groups_) check_declared(group);
+  }
 
   GridDriver& grid() const;
   bool has_grid() const { return grid_ != nullptr; }
@@ -121,6 +132,8 @@ class Context {
   void warn(const std::string& msg) const;   // any rank, prefixed with rank, thorn and function
 
  private:
+  void check_declared(int group) const;
+
   const Parameters* params_;
   const VariableRegistry* vars_;
   GridDriver* grid_ = nullptr;
@@ -139,6 +152,7 @@ class Context {
   std::string resolved_parfile_;
   std::function<void(const std::string&)> run_bin_fn_;
   std::function<void()> invalidate_fn_;
+  const std::vector<int>* declared_groups_ = nullptr;
 };
 
 }  // namespace remnant

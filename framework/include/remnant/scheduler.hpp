@@ -20,6 +20,7 @@ struct ScheduleNode {
   Predicate repeat;                          // groups with repeat_while
   std::vector<int> reads_everywhere;         // group ids whose ghosts must be valid first
   std::vector<int> reads, writes_interior, writes_everywhere;
+  std::vector<int> declared;                 // sorted union of reads and writes (--debug access checks)
   const std::int64_t* every_value = nullptr;   // `every: Thorn::param`
   const ParamValue* condition_value = nullptr;
   ParamValue condition_expected;             // for equal / not_equal

@@ -8,16 +8,23 @@
 #include <limits>
 
 #include "remnant/coordinates.hpp"
+#include "remnant/vars/HydroBase.hpp"
+#include "remnant/vars/Spacetime.hpp"
 
 namespace remnant::analysis {
 
 StarDiagnostics star_diagnostics(Context& ctx) {
-  const int prim = ctx.var("GRMHD::prim"), cons = ctx.var("GRMHD::cons"), metric = ctx.var("Spacetime::metric");
+  using Cons = vars::HydroBase::cons;
   constexpr double inf = std::numeric_limits<double>::infinity();
   double r_min = inf, centre[3] = {0, 0, 0};            // rho, alpha, psi at the cell nearest the origin
   double maxima[3] = {-inf, -inf, -inf};                 // rho_max, -alpha_min, psi_max
   for (Block* b : ctx.grid().local_blocks()) {
-    Field rho = b->field(prim, 0), psi = b->field(metric, 0), alpha = b->field(metric, 1);
+    using Prim = vars::HydroBase::prim;
+    using Metric = vars::Spacetime::metric;
+    const Prim prim(ctx, *b);
+    const Metric metric(ctx, *b);
+    const Field rho = prim.field(Prim::idx::rho);
+    const Field psi = metric.field(Metric::idx::psi), alpha = metric.field(Metric::idx::alpha);
     for_interior(*b, [&](int i, int j, int k) {
       const Point3 X = coords::to_cartesian(b->coordinates, {b->centroid(0, i), b->centroid(1, j), b->centroid(2, k)});
       const double r = std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
@@ -45,7 +52,9 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   MPI_Allreduce(mine, cg, 3, MPI_DOUBLE, MPI_MAX, comm);
   MPI_Allreduce(maxima, mg, 3, MPI_DOUBLE, MPI_MAX, comm);
   // The grid's reduction sums block by block along the curve: the same bits on any rank count.
-  const double mass_g = ctx.grid().reduce(cons, 0, ReductionKind::volume_integral);
+  const int cons = Cons::id(ctx);
+  ctx.check_access(cons);
+  const double mass_g = ctx.grid().reduce(cons, Cons::idx::D, ReductionKind::volume_integral);
   StarDiagnostics d;
   d.iteration = ctx.iteration();
   d.time = ctx.time();

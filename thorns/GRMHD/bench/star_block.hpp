@@ -2,7 +2,9 @@
 // One 3D Cartesian block holding a static TOV star (octant, centre at the corner), with its metric
 // and primitives filled everywhere (ghosts too: the star is static, no exchange needed), for kernel
 // benchmarks: a full RK3 step is 3 x (con2prim, fluxes, divergence + sources, RK update).
+#include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -12,8 +14,10 @@
 #include "EOS/eos.hpp"
 #include "TOV/tov_solver.hpp"
 #include "GRMHD/valencia.hpp"
-#include "GRMHD/con2prim_sweep.hpp"
+#include "HydroBase/sweeps.hpp"
 #include "remnant/grid.hpp"
+#include "remnant/thorn_spec.hpp"
+#include "groups.hpp"
 #include "rhs.hpp"
 
 namespace remnant::grmhd::bench {
@@ -21,27 +25,23 @@ namespace remnant::grmhd::bench {
 class StarBlock {
  public:
   StarBlock(eos::EOS eos, int n, double extent) : eos_(std::move(eos)) {
-    auto add = [&](const std::string& name, Centering c, const std::vector<std::pair<TensorKind, std::string>>& t) {
-      VariableGroupSpec s;
-      s.thorn = name.substr(0, name.find(':'));
-      s.name = name.substr(name.rfind(':') + 1);
-      s.centering = c;
-      for (const auto& [k, base] : t)
-        for (auto& comp : expand_tensor(k, base)) s.components.push_back(comp);
-      return vars_.add(s);
-    };
-    const std::vector<std::pair<TensorKind, std::string>> cons{
-        {TensorKind::scalar, "D"}, {TensorKind::covector, "S"}, {TensorKind::scalar, "tau"}, {TensorKind::scalar, "DYe"}};
-    g_.cons = add("GRMHD::cons", Centering::cell, cons);
-    g_.cons_rhs = add("GRMHD::cons_rhs", Centering::cell, cons);
-    g_.prim = add("GRMHD::prim", Centering::cell,
-                  {{TensorKind::scalar, "rho"}, {TensorKind::vector, "vel"}, {TensorKind::scalar, "eps"},
-                   {TensorKind::scalar, "press"}, {TensorKind::scalar, "temperature"}, {TensorKind::scalar, "Ye"},
-                   {TensorKind::scalar, "W"}, {TensorKind::scalar, "cs2"}});
-    g_.metric = add("Spacetime::metric", Centering::cell,
-                    {{TensorKind::scalar, "psi"}, {TensorKind::scalar, "alpha"}, {TensorKind::vector, "beta"}});
-    g_.flux = {add("GRMHD::flux_x", Centering::face_x, cons), add("GRMHD::flux_y", Centering::face_y, cons),
-               add("GRMHD::flux_z", Centering::face_z, cons)};
+    // The groups as the thorns declare them (thorn.yaml), not a copy of their layout.
+    for (const char* thorn : {"HydroBase", "Spacetime", "GRMHD"}) {
+      const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/" + thorn + "/thorn.yaml";
+      std::ifstream in(path);
+      std::stringstream text;
+      text << in.rdbuf();
+      for (VariableGroupSpec spec : parse_thorn_spec(text.str(), path).variables) {
+        spec.thorn = thorn;
+        vars_.add(spec);
+      }
+    }
+    g_.cons = vars_.find("HydroBase::cons");
+    g_.cons_rhs = vars_.find("HydroBase::cons_rhs");
+    g_.prim = vars_.find("HydroBase::prim");
+    g_.metric = vars_.find("Spacetime::metric");
+    g_.flux = {vars_.find("GRMHD::flux_x"), vars_.find("GRMHD::flux_y"), vars_.find("GRMHD::flux_z")};
+    matter_ = {g_.cons, g_.prim, g_.metric};
     const double dx = extent / n;
     block_ = std::make_unique<Block>(0, 0, std::array<std::int64_t, 3>{0, 0, 0}, std::array<int, 3>{n, n, n},
                                      std::array<int, 3>{3, 3, 3}, std::array<double, 3>{0, 0, 0},
@@ -78,7 +78,7 @@ class StarBlock {
   }
   void recover() {
     std::string fatal;
-    recover_block(eos_, settings_, atm_, g_, *block_, diag_, fatal);
+    hydrobase::recover_block(eos_, settings_, atm_, matter_, *block_, diag_, fatal);
   }
   void fluxes() { compute_block_fluxes(eos_, rhs_settings_, g_, *block_); }
   void divergence() { compute_block_rhs(g_, *block_); }
@@ -104,14 +104,14 @@ class StarBlock {
         for (int i = -3; i < b.n[0] + 3; ++i) {
           const double x = b.x(0, i), y = b.x(1, j), z = b.x(2, k);
           const tov::TovPoint p = star.at(std::sqrt(x * x + y * y + z * z));
-          b.field(g_.metric, 0)(i, j, k) = p.psi;
-          b.field(g_.metric, 1)(i, j, k) = p.alpha;
+          b.field(g_.metric, Metric::idx::psi)(i, j, k) = p.psi;
+          b.field(g_.metric, Metric::idx::alpha)(i, j, k) = p.alpha;
           const bool in = p.rho > atm_.rho_thr;
-          b.field(g_.prim, kRho)(i, j, k) = in ? p.rho : atm_.rho;
-          b.field(g_.prim, kEps)(i, j, k) = in ? p.eps : atm_.eps;
-          b.field(g_.prim, kYe)(i, j, k) = in ? p.ye : atm_.ye;
-          b.field(g_.prim, kTemp)(i, j, k) = 0;
-          b.field(g_.prim, kLorentz)(i, j, k) = 1;
+          b.field(g_.prim, Prim::idx::rho)(i, j, k) = in ? p.rho : atm_.rho;
+          b.field(g_.prim, Prim::idx::eps)(i, j, k) = in ? p.eps : atm_.eps;
+          b.field(g_.prim, Prim::idx::Ye)(i, j, k) = in ? p.ye : atm_.ye;
+          b.field(g_.prim, Prim::idx::temperature)(i, j, k) = 0;
+          b.field(g_.prim, Prim::idx::W)(i, j, k) = 1;
         }
     // Consistent T, p, cs2 everywhere via the initial-data path on a block with zero ghosts? The
     // sweep covers the interior; fill the ghosts with the same EOS calls.
@@ -119,23 +119,24 @@ class StarBlock {
       for (int k = -3; k < b.n[2] + 3; ++k)
         for (int j = -3; j < b.n[1] + 3; ++j)
           for (int i = -3; i < b.n[0] + 3; ++i) {
-            const double rho = b.field(g_.prim, kRho)(i, j, k), eps = b.field(g_.prim, kEps)(i, j, k);
-            const double ye = b.field(g_.prim, kYe)(i, j, k);
+            const double rho = b.field(g_.prim, Prim::idx::rho)(i, j, k), eps = b.field(g_.prim, Prim::idx::eps)(i, j, k);
+            const double ye = b.field(g_.prim, Prim::idx::Ye)(i, j, k);
             const auto inv = e.temperature(rho, eps, ye);
             const auto th = e.thermo(rho, inv.T, ye);
-            b.field(g_.prim, kTemp)(i, j, k) = inv.T;
-            b.field(g_.prim, kPress)(i, j, k) = th.press;
-            b.field(g_.prim, kEps)(i, j, k) = th.eps;
-            b.field(g_.prim, kCs2)(i, j, k) = th.cs2;
+            b.field(g_.prim, Prim::idx::temperature)(i, j, k) = inv.T;
+            b.field(g_.prim, Prim::idx::press)(i, j, k) = th.press;
+            b.field(g_.prim, Prim::idx::eps)(i, j, k) = th.eps;
+            b.field(g_.prim, Prim::idx::cs2)(i, j, k) = th.cs2;
           }
     });
     con2prim::Diagnostics d;
-    prim_to_cons_block(eos_, settings_, atm_, g_, b, d);
+    hydrobase::prim_to_cons_block(eos_, settings_, atm_, matter_, b, d);
   }
 
   eos::EOS eos_;
   VariableRegistry vars_;
   Groups g_;
+  hydrobase::MatterGroups matter_;
   std::unique_ptr<Block> block_;
   atmosphere::Atmosphere atm_;
   con2prim::Settings settings_;

@@ -10,7 +10,7 @@
 #include "GRMHD/face_thermo.hpp"
 #include "GRMHD/sources.hpp"
 #include "GRMHD/valencia.hpp"
-#include "cell_geometry.hpp"
+#include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd {
 namespace {
@@ -24,7 +24,7 @@ struct LineScratch {
   double* cell[kNumRec];    // cell values, offset so that [0] is the first interior cell
   double* left[kNumRec];    // faces 0..n
   double* right[kNumRec];
-  double* met[kNumMetric];  // cell metric along the line
+  double* met[Metric::ncomp];  // cell metric along the line
   double* flux[kNumCons];   // face fluxes (weighted)
   double* ppm;              // reconstruction scratch
   int ng = 0;
@@ -33,7 +33,7 @@ struct LineScratch {
     if (len <= cap && ngh == ng) return;
     cap = len;
     ng = ngh;
-    const int arrays = kNumRec * 3 + kNumMetric + kNumCons + 1;
+    const int arrays = kNumRec * 3 + Metric::ncomp + kNumCons + 1;
     storage.assign(static_cast<std::size_t>(arrays) * static_cast<std::size_t>(len), 0.0);
     double* p = storage.data();
     auto take = [&](int offset) {
@@ -60,9 +60,9 @@ template <class E>
 void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, int d, LineScratch& L) {
   const int n = b.n[d], ng = b.ng[d];
   L.ensure(n, ng);
-  Field prim[kNumPrim], met[kNumMetric], fout[kNumCons];
-  for (int c = 0; c < kNumPrim; ++c) prim[c] = b.field(g.prim, c);
-  for (int c = 0; c < kNumMetric; ++c) met[c] = b.field(g.metric, c);
+  Field prim[Prim::ncomp], met[Metric::ncomp], fout[kNumCons];
+  for (int c = 0; c < Prim::ncomp; ++c) prim[c] = b.field(g.prim, c);
+  for (int c = 0; c < Metric::ncomp; ++c) met[c] = b.field(g.metric, c);
   for (int c = 0; c < kNumCons; ++c) fout[c] = b.field(g.flux[d], c);
   const std::ptrdiff_t stride = d == 0 ? 1 : d == 1 ? prim[0].sj : prim[0].sk;
   const std::ptrdiff_t fstride = d == 0 ? 1 : d == 1 ? fout[0].sj : fout[0].sk;
@@ -82,11 +82,11 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
       const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
       // Gather.
       {
-        const double* pr = prim[kRho].origin + base;
-        const double* pw = prim[kLorentz].origin + base;
-        const double* pv[3] = {prim[kVel1].origin + base, prim[kVel2].origin + base, prim[kVel3].origin + base};
-        const double* pth = (reconstructs_pressure<E> ? prim[kPress] : prim[kTemp]).origin + base;
-        const double* pye = prim[kYe].origin + base;
+        const double* pr = prim[Prim::idx::rho].origin + base;
+        const double* pw = prim[Prim::idx::W].origin + base;
+        const double* pv[3] = {prim[Prim::idx::vel].origin + base, prim[Prim::idx::vel2].origin + base, prim[Prim::idx::vel3].origin + base};
+        const double* pth = (reconstructs_pressure<E> ? prim[Prim::idx::press] : prim[Prim::idx::temperature]).origin + base;
+        const double* pye = prim[Prim::idx::Ye].origin + base;
         for (int m = -ng; m < n + ng; ++m) {
           const std::ptrdiff_t o = m * stride;
           const double W = pw[o];
@@ -97,7 +97,7 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
           L.cell[4][m] = pth[o];
           L.cell[5][m] = pye[o];
         }
-        for (int c = 0; c < kNumMetric; ++c) {
+        for (int c = 0; c < Metric::ncomp; ++c) {
           const double* pm = met[c].origin + base;
           double* out = L.met[c];
           for (int m = -ng; m < n + ng; ++m) out[m] = pm[m * stride];
@@ -109,11 +109,11 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
       Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
       std::array<double, 3> fd{1.0, 1.0, 1.0};
       for (int f = 0; f <= n; ++f) {
-        const double psi = face_value(s.metric_faces, L.met[kPsi], f);
-        const double alpha = face_value(s.metric_faces, L.met[kAlpha], f);
-        std::array<double, 3> beta{face_value(s.metric_faces, L.met[kBeta1], f),
-                                   face_value(s.metric_faces, L.met[kBeta2], f),
-                                   face_value(s.metric_faces, L.met[kBeta3], f)};
+        const double psi = face_value(s.metric_faces, L.met[Metric::idx::psi], f);
+        const double alpha = face_value(s.metric_faces, L.met[Metric::idx::alpha], f);
+        std::array<double, 3> beta{face_value(s.metric_faces, L.met[Metric::idx::beta], f),
+                                   face_value(s.metric_faces, L.met[Metric::idx::beta2], f),
+                                   face_value(s.metric_faces, L.met[Metric::idx::beta3], f)};
         if (!cartesian) {
           x[d] = b.face_coordinate(d, f);
           fd = coords::metric_diagonal(cs, x, d == 1 ? trig.sin_face(f) : trig.sin_centre(idx[1]));
@@ -151,9 +151,9 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
 
 // Pass 2 over the cells of a block, i fastest.
 void divergence_and_sources(const Groups& g, Block& b) {
-  Field prim[kNumPrim], met[kNumMetric], rhs[kNumCons], flux[3][kNumCons];
-  for (int c = 0; c < kNumPrim; ++c) prim[c] = b.field(g.prim, c);
-  for (int c = 0; c < kNumMetric; ++c) met[c] = b.field(g.metric, c);
+  Field prim[Prim::ncomp], met[Metric::ncomp], rhs[kNumCons], flux[3][kNumCons];
+  for (int c = 0; c < Prim::ncomp; ++c) prim[c] = b.field(g.prim, c);
+  for (int c = 0; c < Metric::ncomp; ++c) met[c] = b.field(g.metric, c);
   for (int c = 0; c < kNumCons; ++c) rhs[c] = b.field(g.cons_rhs, c);
   const CoordinateSystem cs = b.coordinates;
   const bool cartesian = cs == CoordinateSystem::cartesian;
@@ -172,7 +172,7 @@ void divergence_and_sources(const Groups& g, Block& b) {
   bool shift = false;
   {
     const std::size_t np = b.points_per_component(g.metric);
-    const double* p = b.data(g.metric) + static_cast<std::size_t>(kBeta1) * np;
+    const double* p = b.data(g.metric) + static_cast<std::size_t>(Metric::idx::beta) * np;
     for (std::size_t i = 0; i < 3 * np && !shift; ++i) shift = p[i] != 0.0;
   }
   const double* ff[3] = {b.face_factors(0), b.face_factors(1), b.face_factors(2)};
@@ -197,8 +197,8 @@ void divergence_and_sources(const Groups& g, Block& b) {
             out[c] -= (ap * F[fst[d]] - am * F[0]) * iv;
           }
         }
-        const double psi = met[kPsi].origin[o], alpha = met[kAlpha].origin[o];
-        const std::array<double, 3> beta{met[kBeta1].origin[o], met[kBeta2].origin[o], met[kBeta3].origin[o]};
+        const double psi = met[Metric::idx::psi].origin[o], alpha = met[Metric::idx::alpha].origin[o];
+        const std::array<double, 3> beta{met[Metric::idx::beta].origin[o], met[Metric::idx::beta2].origin[o], met[Metric::idx::beta3].origin[o]};
         if (!cartesian) {
           const Point3 x = cell_point(b, i, j, k);
           fd = coords::metric_diagonal(cs, x, trig.sin_centre(j));
@@ -210,20 +210,20 @@ void divergence_and_sources(const Groups& g, Block& b) {
         for (int d = 0; d < 3; ++d) {
           if (!used[d]) continue;
           const std::ptrdiff_t s = st[d];
-          dm.dpsi[d] = (met[kPsi].origin[o + s] - met[kPsi].origin[o - s]) * inv2dx[d];
-          dm.dalpha[d] = (met[kAlpha].origin[o + s] - met[kAlpha].origin[o - s]) * inv2dx[d];
+          dm.dpsi[d] = (met[Metric::idx::psi].origin[o + s] - met[Metric::idx::psi].origin[o - s]) * inv2dx[d];
+          dm.dalpha[d] = (met[Metric::idx::alpha].origin[o + s] - met[Metric::idx::alpha].origin[o - s]) * inv2dx[d];
           if (shift)
             for (int c = 0; c < 3; ++c)
-              dm.dbeta[d][c] = (met[kBeta1 + c].origin[o + s] - met[kBeta1 + c].origin[o - s]) * inv2dx[d];
+              dm.dbeta[d][c] = (met[Metric::idx::beta + c].origin[o + s] - met[Metric::idx::beta + c].origin[o - s]) * inv2dx[d];
         }
         FluidState fs;
-        fs.rho = prim[kRho].origin[o];
-        fs.press = prim[kPress].origin[o];
-        fs.eps = prim[kEps].origin[o];
+        fs.rho = prim[Prim::idx::rho].origin[o];
+        fs.press = prim[Prim::idx::press].origin[o];
+        fs.eps = prim[Prim::idx::eps].origin[o];
         fs.h = 1.0 + fs.eps + fs.press / fs.rho;
-        fs.W = prim[kLorentz].origin[o];
+        fs.W = prim[Prim::idx::W].origin[o];
         for (int c = 0; c < 3; ++c) {
-          fs.v[c] = prim[kVel1 + c].origin[o];
+          fs.v[c] = prim[Prim::idx::vel + c].origin[o];
           fs.v_dn[c] = pm.g_dn[c] * fs.v[c];
         }
         fs.v2 = fs.v[0] * fs.v_dn[0] + fs.v[1] * fs.v_dn[1] + fs.v[2] * fs.v_dn[2];

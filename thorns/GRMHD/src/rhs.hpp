@@ -3,7 +3,7 @@
 // fluxes at refinement boundaries in between (refluxing).
 #include "GRMHD/reconstruction.hpp"
 #include "EOS/eos.hpp"
-#include "GRMHD/grid_access.hpp"
+#include "groups.hpp"
 
 namespace remnant::grmhd {
 

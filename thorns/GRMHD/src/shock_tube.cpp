@@ -1,7 +1,9 @@
 #include "shock_tube.hpp"
 
+#include <cmath>
+
 #include "EOS/eos.hpp"
-#include "GRMHD/grid_access.hpp"
+#include "groups.hpp"
 
 namespace remnant::grmhd {
 
@@ -18,18 +20,19 @@ void shock_tube_initial_data(Context& ctx) {
   const ShockTubeState right = state_from(ctx.param<std::vector<double>>("GRMHD", "shock_right"));
   const double x0 = ctx.param<double>("GRMHD", "shock_position");
   const double ye = ctx.param<double>("GRMHD", "initial_ye");
-  const Groups g = Groups::of(ctx);
   for (Block* b : ctx.grid().local_blocks()) {
-    Field prim[kNumPrim];
-    for (int c = 0; c < kNumPrim; ++c) prim[c] = b->field(g.prim, c);
+    const Prim prim(ctx, *b);
     for_interior(*b, [&](int i, int j, int k) {
       const ShockTubeState& s = b->x(0, i) < x0 ? left : right;
-      prim[kRho](i, j, k) = s.rho;
-      for (int c = 0; c < 3; ++c) prim[kVel1 + c](i, j, k) = s.v[c];
-      prim[kPress](i, j, k) = s.press;
-      prim[kEps](i, j, k) = s.press / (gm1 * s.rho);
-      prim[kYe](i, j, k) = ye;
-      prim[kTemp](i, j, k) = 0;
+      prim.rho(i, j, k) = s.rho;
+      for (int c = 0; c < 3; ++c) prim.vel(c, i, j, k) = s.v[c];
+      prim.press(i, j, k) = s.press;
+      prim.eps(i, j, k) = s.press / (gm1 * s.rho);
+      prim.Ye(i, j, k) = ye;
+      prim.temperature(i, j, k) = 0;
+      // Flat space: W from the coordinate velocity; cs2 is recomputed by HydroBase_InitialCons.
+      prim.W(i, j, k) = 1.0 / std::sqrt(1.0 - (s.v[0] * s.v[0] + s.v[1] * s.v[1] + s.v[2] * s.v[2]));
+      prim.cs2(i, j, k) = 0;
     });
   }
 }

@@ -1,6 +1,6 @@
 #pragma once
 // CFL limit from the matter's characteristic speeds: max over cells and directions of |lambda| / dx.
-#include "GRMHD/grid_access.hpp"
+#include "groups.hpp"
 
 namespace remnant::grmhd {
 

@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "remnant/vars/HydroBase.hpp"
 #include "exact_riemann_srhd.hpp"
 #include "remnant/driver.hpp"
 
@@ -50,10 +51,11 @@ double l1_error(const Problem& pb, int n, const std::string& reconstruction) {
   sim.run();
   EXPECT_NEAR(sim.context().time(), pb.final_time, 1e-12);
   const ExactRiemannSRHD exact(5.0 / 3.0, pb.left, pb.right);
-  const int prim = sim.vars().find("GRMHD::prim");
+  using Prim = vars::HydroBase::prim;
+  const int prim = sim.vars().find(Prim::full_name);
   double err = 0;
   for (Block* b : sim.grid()->local_blocks()) {
-    Field rho = b->field(prim, 0);
+    const Field rho = Prim(*b, prim).field(Prim::idx::rho);
     for (int i = 0; i < b->n[0]; ++i)
       err += std::abs(rho(i, 0, 0) - exact.sample((b->x(0, i) - 0.5) / pb.final_time).rho) * b->dx[0];
   }

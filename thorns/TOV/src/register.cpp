@@ -10,6 +10,8 @@
 #include "remnant/context.hpp"
 #include "remnant/coordinates.hpp"
 #include "remnant/registrar.hpp"
+#include "remnant/vars/HydroBase.hpp"
+#include "remnant/vars/Spacetime.hpp"
 
 namespace remnant::tov {
 namespace {
@@ -42,8 +44,9 @@ void initial(Context& ctx) {
   ctx.info(line);
   const bool perturb = ctx.param<std::string>("TOV", "perturbation") == "radial_velocity";
   const double amp = ctx.param<double>("TOV", "perturbation_amplitude");
-  const int prim = ctx.var("GRMHD::prim"), metric = ctx.var("Spacetime::metric");
   for (Block* b : ctx.grid().local_blocks()) {
+    const vars::HydroBase::prim prim(ctx, *b);
+    const vars::Spacetime::metric metric(ctx, *b);
     const CoordinateSystem cs = b->coordinates;
     auto point = [&](int i, int j, int k) { return Point3{b->centroid(0, i), b->centroid(1, j), b->centroid(2, k)}; };
     auto radius = [&](const Point3& x) {
@@ -51,17 +54,14 @@ void initial(Context& ctx) {
       return std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
     };
     // Metric everywhere (ghosts included).
-    Field psi = b->field(metric, 0), alpha = b->field(metric, 1);
     for (int k = -b->ng[2]; k < b->n[2] + b->ng[2]; ++k)
       for (int j = -b->ng[1]; j < b->n[1] + b->ng[1]; ++j)
         for (int i = -b->ng[0]; i < b->n[0] + b->ng[0]; ++i) {
           const TovPoint p = star.at(radius(point(i, j, k)));
-          psi(i, j, k) = p.psi;
-          alpha(i, j, k) = p.alpha;
-          for (int c = 2; c < 5; ++c) b->field(metric, c)(i, j, k) = 0.0;
+          metric.psi(i, j, k) = p.psi;
+          metric.alpha(i, j, k) = p.alpha;
+          for (int c = 0; c < 3; ++c) metric.beta(c, i, j, k) = 0.0;
         }
-    Field f[10];
-    for (int c = 0; c < 10; ++c) f[c] = b->field(prim, c);
     for_interior(*b, [&](int i, int j, int k) {
       const Point3 x = point(i, j, k);
       const double r = radius(x);
@@ -72,14 +72,14 @@ void initial(Context& ctx) {
         const double s = amp * std::sin(std::numbers::pi * r / star.isotropic_radius()) / r;
         v = coords::vector_from_cartesian(cs, x, {s * X[0], s * X[1], s * X[2]});
       }
-      f[0](i, j, k) = p.rho;
-      for (int c = 0; c < 3; ++c) f[1 + c](i, j, k) = v[c];
-      f[4](i, j, k) = p.eps;
-      f[5](i, j, k) = p.press;
-      f[6](i, j, k) = 0.0;  // T follows from eps in GRMHD_InitialCons
-      f[7](i, j, k) = p.ye;
-      f[8](i, j, k) = 1.0;
-      f[9](i, j, k) = 0.0;
+      prim.rho(i, j, k) = p.rho;
+      for (int c = 0; c < 3; ++c) prim.vel(c, i, j, k) = v[c];
+      prim.eps(i, j, k) = p.eps;
+      prim.press(i, j, k) = p.press;
+      prim.temperature(i, j, k) = 0.0;  // T follows from eps in HydroBase_InitialCons
+      prim.Ye(i, j, k) = p.ye;
+      prim.W(i, j, k) = 1.0;
+      prim.cs2(i, j, k) = 0.0;
     });
   }
 }

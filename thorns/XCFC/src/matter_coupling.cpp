@@ -1,16 +1,18 @@
 #include "matter_coupling.hpp"
 
-#include "Atmosphere/atmosphere.hpp"
+#include <cmath>
+
 #include "Con2Prim/prim_to_cons.hpp"
-#include "GRMHD/con2prim_sweep.hpp"
-#include "Con2Prim/settings.hpp"
-#include "EOS/eos.hpp"
+#include "HydroBase/sweeps.hpp"
+#include "remnant/vars/HydroBase.hpp"
+#include "remnant/vars/Spacetime.hpp"
 
 namespace remnant::xcfc {
 namespace {
 
-using grmhd::kRho, grmhd::kVel1, grmhd::kEps, grmhd::kPress, grmhd::kTemp, grmhd::kYe, grmhd::kLorentz, grmhd::kCs2;
-enum Cons : int { kD = 0, kS = 1, kTau = 4, kDYe = 5 };
+using Prim = vars::HydroBase::prim;
+using Cons = vars::HydroBase::cons;
+using Metric = vars::Spacetime::metric;
 
 con2prim::Metric3 cell_metric(const Block& b, double psi, int i, int j, int k) {
   const Point3 f = coords::metric_diagonal(b.coordinates, {b.centroid(0, i), b.centroid(1, j), b.centroid(2, k)});
@@ -18,63 +20,66 @@ con2prim::Metric3 cell_metric(const Block& b, double psi, int i, int j, int k) {
   return con2prim::Metric3::from_lower_and_inverse({a, 0, 0, c, 0, d}, {1 / a, 0, 0, 1 / c, 0, 1 / d}, a * c * d);
 }
 
-void store(Block& b, const MatterGroups& g, int i, int j, int k, const con2prim::Primitives& p,
+void store(const Prim& prim, const Cons& cons, int i, int j, int k, const con2prim::Primitives& p,
            const con2prim::Conserved& c, double psi6) {
-  b.field(g.prim, kRho)(i, j, k) = p.rho;
-  for (int d = 0; d < 3; ++d) b.field(g.prim, kVel1 + d)(i, j, k) = p.v[d];
-  b.field(g.prim, kEps)(i, j, k) = p.eps;
-  b.field(g.prim, kPress)(i, j, k) = p.press;
-  b.field(g.prim, kTemp)(i, j, k) = p.T;
-  b.field(g.prim, kYe)(i, j, k) = p.ye;
-  b.field(g.prim, kLorentz)(i, j, k) = p.W;
-  b.field(g.prim, kCs2)(i, j, k) = p.cs2;
-  b.field(g.cons, kD)(i, j, k) = psi6 * c.D;
-  for (int d = 0; d < 3; ++d) b.field(g.cons, kS + d)(i, j, k) = psi6 * c.S[d];
-  b.field(g.cons, kTau)(i, j, k) = psi6 * c.tau;
-  b.field(g.cons, kDYe)(i, j, k) = psi6 * c.DYe;
+  prim.rho(i, j, k) = p.rho;
+  for (int d = 0; d < 3; ++d) prim.vel(d, i, j, k) = p.v[d];
+  prim.eps(i, j, k) = p.eps;
+  prim.press(i, j, k) = p.press;
+  prim.temperature(i, j, k) = p.T;
+  prim.Ye(i, j, k) = p.ye;
+  prim.W(i, j, k) = p.W;
+  prim.cs2(i, j, k) = p.cs2;
+  cons.D(i, j, k) = psi6 * c.D;
+  for (int d = 0; d < 3; ++d) cons.S(d, i, j, k) = psi6 * c.S[d];
+  cons.tau(i, j, k) = psi6 * c.tau;
+  cons.DYe(i, j, k) = psi6 * c.DYe;
 }
 
 }  // namespace
 
-MatterGroups MatterGroups::of(const Context& ctx) {
-  return {ctx.var("GRMHD::cons"), ctx.var("GRMHD::prim"), ctx.var("Spacetime::metric")};
-}
+MatterGroups MatterGroups::of(const Context& ctx) { return {Cons::id(ctx), Prim::id(ctx), Metric::id(ctx)}; }
 
 std::uint64_t recover_primitives(Context& ctx, const MatterGroups& g) {
-  // The same sweep GRMHD runs after every substep, now with the new psi in Spacetime::metric.
+  // The same sweep the evolution runs after every substep, now with the new psi in Spacetime::metric.
   const auto& eos = ctx.service<eos::EOS>("eos");
   const auto& s = ctx.service<con2prim::Settings>("con2prim");
   const auto& atm = ctx.service<atmosphere::Atmosphere>("atmosphere");
-  const grmhd::Groups groups = grmhd::Groups::of(ctx);
+  const hydrobase::MatterGroups groups{g.cons, g.prim, g.metric};
   con2prim::Diagnostics diag;
   std::string first_fatal_cell;
-  for (Block* b : ctx.grid().local_blocks()) grmhd::recover_block(eos, s, atm, groups, *b, diag, first_fatal_cell);
+  for (Block* b : ctx.grid().local_blocks()) hydrobase::recover_block(eos, s, atm, groups, *b, diag, first_fatal_cell);
   return diag.fatal_cells;
 }
 
 void conserved_from_primitives(Context& ctx, const MatterGroups& g) {
   for (Block* b : ctx.grid().local_blocks()) {
-    Field psi = b->field(g.metric, 0);
+    const Prim prim(*b, g.prim);
+    const Cons cons(*b, g.cons);
+    const Metric metric(*b, g.metric);
     for_interior(*b, [&](int i, int j, int k) {
-      const double p = psi(i, j, k), p2 = p * p, psi6 = p2 * p2 * p2;
+      const double p = metric.psi(i, j, k), p2 = p * p, psi6 = p2 * p2 * p2;
       const con2prim::Metric3 m = cell_metric(*b, p, i, j, k);
       con2prim::Primitives pr;
-      pr.rho = b->field(g.prim, kRho)(i, j, k);
-      for (int d = 0; d < 3; ++d) pr.v[d] = b->field(g.prim, kVel1 + d)(i, j, k);
-      pr.eps = b->field(g.prim, kEps)(i, j, k);
-      pr.press = b->field(g.prim, kPress)(i, j, k);
-      pr.T = b->field(g.prim, kTemp)(i, j, k);
-      pr.ye = b->field(g.prim, kYe)(i, j, k);
-      pr.cs2 = b->field(g.prim, kCs2)(i, j, k);
+      pr.rho = prim.rho(i, j, k);
+      for (int d = 0; d < 3; ++d) pr.v[d] = prim.vel(d, i, j, k);
+      pr.eps = prim.eps(i, j, k);
+      pr.press = prim.press(i, j, k);
+      pr.T = prim.temperature(i, j, k);
+      pr.ye = prim.Ye(i, j, k);
+      pr.cs2 = prim.cs2(i, j, k);
       pr.W = 1.0 / std::sqrt(1.0 - m.norm2_up(pr.v));
-      store(*b, g, i, j, k, pr, con2prim::prim_to_cons(pr, m), psi6);
+      store(prim, cons, i, j, k, pr, con2prim::prim_to_cons(pr, m), psi6);
     });
   }
 }
 
-DensitisedStressTrace::DensitisedStressTrace(Block& b, const MatterGroups& g)
-    : psi(b.field(g.metric, 0)), press(b.field(g.prim, kPress)) {
-  for (int d = 0; d < 3; ++d) S[d] = b.field(g.cons, kS + d), v[d] = b.field(g.prim, kVel1 + d);
+DensitisedStressTrace::DensitisedStressTrace(Block& b, const MatterGroups& g) {
+  const Prim prim(b, g.prim);
+  const Cons cons(b, g.cons);
+  psi = Metric(b, g.metric).field(Metric::idx::psi);
+  press = prim.field(Prim::idx::press);
+  for (int d = 0; d < 3; ++d) S[d] = cons.field(Cons::idx::S + d), v[d] = prim.field(Prim::idx::vel + d);
 }
 
 double DensitisedStressTrace::operator()(int i, int j, int k) const {

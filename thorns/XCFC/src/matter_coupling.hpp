@@ -1,7 +1,7 @@
 #pragma once
-// The matter side of the xCFC sequence on the local blocks: the sources from GRMHD's densitised
-// conserved variables, the primitive recovery with the new psi (GRMHD's sweep), and the conserved
-// variables of given primitives (initial data), in the component layout of GRMHD/grid_access.hpp.
+// The matter side of the xCFC sequence on the local blocks: the sources from HydroBase's densitised
+// conserved variables, the primitive recovery with the new psi (HydroBase's sweep), and the
+// conserved variables of given primitives (initial data), through the generated views.
 #include <cstdint>
 
 #include "remnant/context.hpp"

@@ -20,6 +20,8 @@
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
 #include "remnant/tsv_file.hpp"
+#include "remnant/vars/HydroBase.hpp"
+#include "remnant/vars/Spacetime.hpp"
 
 namespace remnant::xcfc {
 namespace {
@@ -100,11 +102,13 @@ struct Sources {
 
 Sources gather_sources(const GridBridge& br, const MatterGroups& g) {
   Sources s;
+  using Cons = vars::HydroBase::cons;
   s.E = br.gather_cells([&](Block& b) {
-    const Field D = b.field(g.cons, 0), tau = b.field(g.cons, 4);
+    const Cons cons(b, g.cons);
+    const Field D = cons.field(Cons::idx::D), tau = cons.field(Cons::idx::tau);
     return [=](int i, int j, int k) { return D(i, j, k) + tau(i, j, k); };
   });
-  for (int d = 0; d < 3; ++d) s.S[d] = br.gather(g.cons, 1 + d);
+  for (int d = 0; d < 3; ++d) s.S[d] = br.gather(g.cons, Cons::idx::S + d);
   return s;
 }
 
@@ -209,8 +213,11 @@ void record_history(Context& ctx) {
   for (Block* b : ctx.grid().local_blocks())
     for (int c = 0; c < 5; ++c) {
       Field m = b->field(metric, c), last = b->field(hist, c), before = b->field(hist, 5 + c);
+      // The first solve fills both slots: "before" is unused until a second solve is recorded,
+      // but it is declared written (and checkpointed), so it must hold defined values.
+      const Field& previous = rt.history == 0 ? m : last;
       for_interior(*b, [&](int i, int j, int k) {
-        before(i, j, k) = last(i, j, k);
+        before(i, j, k) = previous(i, j, k);
         last(i, j, k) = m(i, j, k);
       });
     }

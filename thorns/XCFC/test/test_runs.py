@@ -42,7 +42,7 @@ def make_runner(a):
     parfile = os.path.join(a.work, "bu0_dyn_io.yaml")
     with open(parfile, "w") as f:
         f.write("include: %s\n" % os.path.abspath(os.path.join(a.source_dir, "parfiles", "bu0_dyn.yaml")))
-        f.write("active_thorns: [Grid, MoL, Spacetime, EOS, Atmosphere, Con2Prim, GRMHD, TOV, Analysis, XCFC, IO]\n")
+        f.write("active_thorns: [Grid, MoL, Spacetime, EOS, Atmosphere, Con2Prim, HydroBase, GRMHD, TOV, Analysis, XCFC, IO]\n")
     return remnant_runs.Runner(a, parfile, BASE)
 
 
@@ -139,7 +139,7 @@ def mode_amr(r):
               " (ratio %.1f)" % (col, ea, ec, ec / max(ea, 1e-300)))
         assert ec > 10 * ea, "the refined run does not follow the fine uniform run (%s)" % col
     adapt = ["Grid::ncells=[320,1,1]", "Grid::block_size=[16,1,1]", "Grid::max_level=2", "Grid::regrid_every=10",
-             "Grid::refine_variable=GRMHD::prim.rho", "Grid::refine_scale=log", "Grid::refine_threshold=0.1"]
+             "Grid::refine_variable=HydroBase::prim.rho", "Grid::refine_scale=log", "Grid::refine_threshold=0.1"]
     one, p1 = r.run("adaptive_np1", 1, adapt + ["MoL::max_iterations=60"])
     two, _ = r.run("adaptive_np2", 2, adapt + ["MoL::max_iterations=60"])
     first, _ = r.run("adaptive_restart", 1, adapt + ["MoL::max_iterations=37", "IO::checkpoint_every=35"])

@@ -8,6 +8,7 @@
 //   F^j = U (alpha v^j - beta^j) + alpha p (0, delta^j_i, v^j, 0).
 // Everything here is per point and NOT densitised; the caller multiplies by psi^6 and the face
 // weights. Magnetic terms enter later through the same structs (B^i, b^2), see DESIGN.md.
+#include <algorithm>
 #include <array>
 #include <cmath>
 

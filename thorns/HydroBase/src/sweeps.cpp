@@ -1,15 +1,20 @@
-#include "GRMHD/con2prim_sweep.hpp"
+#include "HydroBase/sweeps.hpp"
+
+#include <cstdio>
 
 #include "Con2Prim/error_policy.hpp"
 #include "Con2Prim/prim_to_cons.hpp"
 #include "Con2Prim/recover.hpp"
-#include "GRMHD/valencia.hpp"
-#include "cell_geometry.hpp"
+#include "remnant/cell_geometry.hpp"
+#include "remnant/vars/HydroBase.hpp"
+#include "remnant/vars/Spacetime.hpp"
 
-#include <cstdio>
-
-namespace remnant::grmhd {
+namespace remnant::hydrobase {
 namespace {
+
+using Prim = vars::HydroBase::prim;
+using Cons = vars::HydroBase::cons;
+using Metric = vars::Spacetime::metric;
 
 // gamma_ij = psi^4 f_ii at a cell centre, in the form con2prim takes.
 con2prim::Metric3 cell_metric(double psi4, const std::array<double, 3>& f) {
@@ -17,28 +22,41 @@ con2prim::Metric3 cell_metric(double psi4, const std::array<double, 3>& f) {
   return con2prim::Metric3::from_lower_and_inverse({a, 0, 0, b, 0, c}, {1 / a, 0, 0, 1 / b, 0, 1 / c}, a * b * c);
 }
 
+// The variables of one block, as Fields addressed by one offset o = i + j sj + k sk (every group
+// here is cell-centred with the same ghosts, so one offset serves all).
 struct CellAccess {
-  Field prim[kNumPrim], met[kNumMetric], cons[kNumCons];
-  CellAccess(const Groups& g, Block& b) {
-    for (int c = 0; c < kNumPrim; ++c) prim[c] = b.field(g.prim, c);
-    for (int c = 0; c < kNumMetric; ++c) met[c] = b.field(g.metric, c);
-    for (int c = 0; c < kNumCons; ++c) cons[c] = b.field(g.cons, c);
+  Field prim[Prim::ncomp], met[Metric::ncomp], cons[Cons::ncomp];
+  CellAccess(const MatterGroups& g, Block& b) {
+    const Prim p(b, g.prim);
+    const Metric m(b, g.metric);
+    const Cons c(b, g.cons);
+    for (int q = 0; q < Prim::ncomp; ++q) prim[q] = p.field(q);
+    for (int q = 0; q < Metric::ncomp; ++q) met[q] = m.field(q);
+    for (int q = 0; q < Cons::ncomp; ++q) cons[q] = c.field(q);
   }
   void store_prim(std::ptrdiff_t o, const con2prim::Primitives& p) const {
-    prim[kRho].origin[o] = p.rho;
-    for (int c = 0; c < 3; ++c) prim[kVel1 + c].origin[o] = p.v[c];
-    prim[kEps].origin[o] = p.eps;
-    prim[kPress].origin[o] = p.press;
-    prim[kTemp].origin[o] = p.T;
-    prim[kYe].origin[o] = p.ye;
-    prim[kLorentz].origin[o] = p.W;
-    prim[kCs2].origin[o] = p.cs2;
+    prim[Prim::idx::rho].origin[o] = p.rho;
+    for (int c = 0; c < 3; ++c) prim[Prim::idx::vel + c].origin[o] = p.v[c];
+    prim[Prim::idx::eps].origin[o] = p.eps;
+    prim[Prim::idx::press].origin[o] = p.press;
+    prim[Prim::idx::temperature].origin[o] = p.T;
+    prim[Prim::idx::Ye].origin[o] = p.ye;
+    prim[Prim::idx::W].origin[o] = p.W;
+    prim[Prim::idx::cs2].origin[o] = p.cs2;
   }
   void store_cons(std::ptrdiff_t o, const con2prim::Conserved& c, double psi6) const {
-    cons[0].origin[o] = psi6 * c.D;
-    for (int i = 0; i < 3; ++i) cons[1 + i].origin[o] = psi6 * c.S[i];
-    cons[4].origin[o] = psi6 * c.tau;
-    cons[5].origin[o] = psi6 * c.DYe;
+    cons[Cons::idx::D].origin[o] = psi6 * c.D;
+    for (int i = 0; i < 3; ++i) cons[Cons::idx::S + i].origin[o] = psi6 * c.S[i];
+    cons[Cons::idx::tau].origin[o] = psi6 * c.tau;
+    cons[Cons::idx::DYe].origin[o] = psi6 * c.DYe;
+  }
+  con2prim::Conserved load_cons(std::ptrdiff_t o, double ipsi6) const {
+    con2prim::Conserved c;
+    c.D = cons[Cons::idx::D].origin[o] * ipsi6;
+    for (int i = 0; i < 3; ++i) c.S[i] = cons[Cons::idx::S + i].origin[o] * ipsi6;
+    c.tau = cons[Cons::idx::tau].origin[o] * ipsi6;
+    c.DYe = cons[Cons::idx::DYe].origin[o] * ipsi6;
+    return c;
   }
 };
 
@@ -52,24 +70,19 @@ void for_cells(Block& b, const CellAccess& acc, F&& f) {
       for (int i = 0; i < b.n[0]; ++i) {
         const std::ptrdiff_t o = i + j * acc.met[0].sj + k * acc.met[0].sk;
         if (!cartesian) fd = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k), trig.sin_centre(j));
-        const double psi = acc.met[kPsi].origin[o], p2 = psi * psi;
+        const double psi = acc.met[Metric::idx::psi].origin[o], p2 = psi * psi;
         f(o, p2 * p2, p2 * p2 * p2, fd);
       }
 }
 
 template <class E>
-void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm, const Groups& g,
+void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm, const MatterGroups& g,
                   Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell) {
   const CellAccess acc(g, b);
   for_cells(b, acc, [&](std::ptrdiff_t o, double psi4, double psi6, const std::array<double, 3>& fd) {
-    const double ipsi6 = 1.0 / psi6;
-    con2prim::Conserved c;
-    c.D = acc.cons[0].origin[o] * ipsi6;
-    for (int i = 0; i < 3; ++i) c.S[i] = acc.cons[1 + i].origin[o] * ipsi6;
-    c.tau = acc.cons[4].origin[o] * ipsi6;
-    c.DYe = acc.cons[5].origin[o] * ipsi6;
+    con2prim::Conserved c = acc.load_cons(o, 1.0 / psi6);
     con2prim::Primitives p;
-    p.T = acc.prim[kTemp].origin[o];
+    p.T = acc.prim[Prim::idx::temperature].origin[o];
     const con2prim::Report r = con2prim::recover(eos, s, atm, cell_metric(psi4, fd), c, p);
     diag.add(r);
     if (r.fatal() && fatal_cell.empty()) {
@@ -88,16 +101,16 @@ void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::A
 
 template <class E>
 void prim_to_cons_impl(const E& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
-                       const Groups& g, Block& b,
+                       const MatterGroups& g, Block& b,
                        con2prim::Diagnostics& diag) {
   const CellAccess acc(g, b);
   for_cells(b, acc, [&](std::ptrdiff_t o, double psi4, double psi6, const std::array<double, 3>& fd) {
     con2prim::Primitives p;
-    p.rho = acc.prim[kRho].origin[o];
-    for (int i = 0; i < 3; ++i) p.v[i] = acc.prim[kVel1 + i].origin[o];
-    p.eps = acc.prim[kEps].origin[o];
-    p.ye = acc.prim[kYe].origin[o];
-    p.T = acc.prim[kTemp].origin[o];
+    p.rho = acc.prim[Prim::idx::rho].origin[o];
+    for (int i = 0; i < 3; ++i) p.v[i] = acc.prim[Prim::idx::vel + i].origin[o];
+    p.eps = acc.prim[Prim::idx::eps].origin[o];
+    p.ye = acc.prim[Prim::idx::Ye].origin[o];
+    p.T = acc.prim[Prim::idx::temperature].origin[o];
     const con2prim::Metric3 m = cell_metric(psi4, fd);
     if (atm.is_atmosphere(p.rho)) {
       atm.set(p);
@@ -117,13 +130,13 @@ void prim_to_cons_impl(const E& eos, const con2prim::Settings& s, const atmosphe
 }  // namespace
 
 void recover_block(const eos::EOS& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
-                   const Groups& g, Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell) {
+                   const MatterGroups& g, Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell) {
   eos.visit([&](const auto& e) { recover_impl(e, s, atm, g, b, diag, fatal_cell); });
 }
 
 void prim_to_cons_block(const eos::EOS& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
-                        const Groups& g, Block& b, con2prim::Diagnostics& diag) {
+                        const MatterGroups& g, Block& b, con2prim::Diagnostics& diag) {
   eos.visit([&](const auto& e) { prim_to_cons_impl(e, s, atm, g, b, diag); });
 }
 
-}  // namespace remnant::grmhd
+}  // namespace remnant::hydrobase

@@ -7,7 +7,7 @@
 #include "remnant/coordinates.hpp"
 #include "remnant/grid.hpp"
 
-namespace remnant::grmhd {
+namespace remnant {
 
 inline Point3 cell_point(const Block& b, int i, int j, int k) { return {b.centroid(0, i), b.centroid(1, j), b.centroid(2, k)}; }
 
@@ -41,4 +41,4 @@ struct PolarTrig {
   double sin_face(int j) const { return sin_f.empty() ? 0.0 : sin_f[static_cast<std::size_t>(j + ng)]; }
 };
 
-}  // namespace remnant::grmhd
+}  // namespace remnant

@@ -1,0 +1,40 @@
+#pragma once
+// Primitive recovery and atmosphere over the interior of a block (after every MoL substep, and after
+// a metric solve), and the conserved variables from primitives (initial data). Both undo / apply the
+// psi^6 densitisation of HydroBase::cons.
+#include <string>
+
+#include "Atmosphere/atmosphere.hpp"
+#include "Con2Prim/report.hpp"
+#include "Con2Prim/settings.hpp"
+#include "EOS/eos.hpp"
+#include "remnant/context.hpp"
+
+namespace remnant::hydrobase {
+
+// The group ids the sweeps use, resolved once per scheduled call.
+struct MatterGroups {
+  int cons = -1, prim = -1, metric = -1;
+  static MatterGroups of(const Context& ctx);
+};
+
+// cons -> prim with the paper's recovery; cons is overwritten with the conserved variables of the
+// corrected primitives (atmosphere, policy).
+// The first cell in which a fatal rule fired, if any, is described in `fatal_cell`.
+void recover_block(const eos::EOS& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
+                   const MatterGroups& g, Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell);
+
+// Initial data: the primitives (rho, v, eps, Ye) are made consistent (atmosphere, error policy with
+// eps trusted, T from eps, p and cs2 from the EOS) and the conserved variables computed.
+void prim_to_cons_block(const eos::EOS& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
+                        const MatterGroups& g, Block& b, con2prim::Diagnostics& diag);
+
+// Every local block through recover_block with the published EOS, con2prim settings and atmosphere;
+// the counts are reported (and a fatal policy rule stops the run) as `where`. Collective.
+void recover_all(Context& ctx, const char* where);
+
+// Sums the diagnostics over all ranks; throws RunError when a fatal policy rule fired anywhere (paper:
+// rules 1, 3, 5) and warns (rank 0) about failed recoveries. Collective.
+void report_recovery(Context& ctx, const con2prim::Diagnostics& d, const char* where, const std::string& fatal_cell = "");
+
+}  // namespace remnant::hydrobase

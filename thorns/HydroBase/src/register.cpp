@@ -1,0 +1,24 @@
+// HydroBase: binds the scheduled functions of thorn.yaml.
+#include "HydroBase/sweeps.hpp"
+#include "remnant/registrar.hpp"
+
+namespace remnant::hydrobase {
+namespace {
+
+void initial_cons(Context& ctx) {
+  const auto& eos = ctx.service<eos::EOS>("eos");
+  const auto& settings = ctx.service<con2prim::Settings>("con2prim");
+  const auto& atm = ctx.service<atmosphere::Atmosphere>("atmosphere");
+  const MatterGroups g = MatterGroups::of(ctx);
+  con2prim::Diagnostics diag;
+  for (Block* b : ctx.grid().local_blocks()) prim_to_cons_block(eos, settings, atm, g, *b, diag);
+  report_recovery(ctx, diag, "HydroBase_InitialCons");
+}
+
+}  // namespace
+}  // namespace remnant::hydrobase
+
+REMNANT_REGISTER_THORN(HydroBase) {
+  using namespace remnant::hydrobase;
+  reg.function("HydroBase_InitialCons", initial_cons);
+}
