@@ -551,7 +551,10 @@ int run_main(int argc, char** argv, const ExecutableInfo& exe) {
     const Context& ctx = sim->context();
     int nranks = 1;
     MPI_Comm_size(MPI_COMM_WORLD, &nranks);
-    const std::string message = failure_message(e, ctx.current_thorn(), ctx.current_function(), rank, nranks);
+    std::string message = failure_message(e, ctx.current_thorn(), ctx.current_function(), rank, nranks);
+    // A thorn may know a likely cause (MoL: a time step above the stability limit).
+    if (ctx.has_service("failure_hint"))
+      if (const auto& hint = ctx.service<std::string>("failure_hint"); !hint.empty()) message += "\n  likely cause: " + hint;
     const FailureOutcome outcome = report_failure(message, error_comm);
     if (!outcome.all_failed) {
       // Some rank still runs (maybe waiting in a collective): stop them all. The lowest failing
