@@ -72,7 +72,8 @@ double memory_limit_per_rank(double max_memory_gb, MPI_Comm comm) {
 
 std::string format_bytes(double bytes) {
   char buf[64];
-  if (bytes >= 1e9) std::snprintf(buf, sizeof buf, "%.3g GB", bytes / 1e9);
+  if (bytes >= 1e12) std::snprintf(buf, sizeof buf, "%.3g TB", bytes / 1e12);
+  else if (bytes >= 1e9) std::snprintf(buf, sizeof buf, "%.3g GB", bytes / 1e9);
   else if (bytes >= 1e6) std::snprintf(buf, sizeof buf, "%.3g MB", bytes / 1e6);
   else std::snprintf(buf, sizeof buf, "%.3g kB", bytes / 1e3);
   return buf;
