@@ -83,7 +83,8 @@ GridConfig memory_checked(const GridConfig& config, const VariableRegistry& vars
                           MPI_Comm comm) {
   int nranks = 1;
   MPI_Comm_size(comm, &nranks);
-  const double max_gb = params.get<double>("Flesh", "max_memory_gb");
+  // Tools and tests may build a grid from Grid parameters alone.
+  const double max_gb = params.find("Flesh", "max_memory_gb") ? params.get<double>("Flesh", "max_memory_gb") : 0.0;
   const double limit = memory_limit_per_rank(max_gb, comm);
   const std::int64_t blocks = level0_blocks(config);
   const MemoryEstimate m = estimate_memory(config, vars, blocks, nranks);
