@@ -64,6 +64,13 @@ for amp in 0.9 -0.9; do
   expect "perturbation_amplitude_$amp" nonzero "TOV::perturbation_amplitude = $amp makes the star's fluid move at \|v\| = 1\.[0-9]+ .*allowed: \|amplitude\| < 0\.7" "$noise" -- \
     "$exe" "$star" TOV::perturbation=radial_velocity TOV::perturbation_amplitude=$amp "${initial_only[@]}"
 done
+table=$src/../shared/eos/SFHo_reduced_39r_39t_20y.h5
+if [ -f "$table" ]; then
+  expect rho_central_above_table nonzero "TOV::rho_central = 10 is outside the EOS's densities \[.*\] \(the table's range, EOS::table_file\)" "$noise" -- \
+    "$exe" "$star" EOS::type=tabulated EOS::table_file="$table" TOV::eos_slice=tabulated_beta TOV::rho_central=10 "${initial_only[@]}"
+else
+  echo "skip rho_central_above_table: no $table"
+fi
 expect perturbation_allowed 0 "Run ends at iteration 0" - -- \
   "$exe" "$star" TOV::perturbation=radial_velocity TOV::perturbation_amplitude=0.5 "${initial_only[@]}"
 expect star_error_once_mpi nonzero "TOV::rho_central = 2 is outside the EOS's densities" "$noise" -- \
