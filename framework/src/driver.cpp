@@ -348,6 +348,7 @@ void Simulation::progress_line(double wall_start, double fraction_start, std::in
 void Simulation::run() {
   auto& s = *scheduler_;
   auto& ctx = *ctx_;
+  ctx.set_current("Flesh", "run");  // an error outside any scheduled function names the driver
   s.run_bin("startup", ctx);
   s.run_bin("paramcheck", ctx);
   bool recovered = false;
@@ -380,6 +381,7 @@ void Simulation::evolve() {
   bool has_termination = false;
   for (const auto& [thorn, fn] : catalog_.hooks().termination)
     has_termination |= std::find(active_.begin(), active_.end(), thorn) != active_.end();
+  ctx.set_current("Flesh", "evolve");
   if (!has_termination)
     throw RunError("functions are scheduled in 'evol' but no active thorn decides when the run ends (activate MoL)");
   const auto& every = params_.get<std::int64_t>("Flesh", "progress_every");
