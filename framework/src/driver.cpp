@@ -12,7 +12,9 @@
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <thread>
 
+#include "failure_report.hpp"
 #include "remnant/build_info.hpp"
 #include "remnant/parfile.hpp"
 #include "remnant/registrar.hpp"
@@ -264,19 +266,30 @@ void Simulation::setup_output_and_grid() {
   MPI_Allreduce(&h, &hmin, 1, MPI_UNSIGNED_LONG_LONG, MPI_MIN, comm_);
   MPI_Allreduce(&h, &hmax, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, comm_);
   if (hmin != hmax) throw RunError("the MPI ranks hold different parameters (different parfiles on different nodes?)");
+  // Rank 0 writes; every rank learns the outcome, so that a failure stops all of them together.
+  ctx_->set_current("Flesh", "create_output_directory");
+  std::string failure;
   if (ctx_->rank() == 0) {
     std::error_code ec;
     fs::create_directories(ctx_->out_dir(), ec);
-    if (ec) throw RunError("cannot create output directory '" + ctx_->out_dir() + "': " + ec.message());
     const std::string path = ctx_->out_dir() + "/parfile.resolved.yaml";
-    std::ofstream out(path);
-    out << "# date: " << now_string() << "\n" << resolved;
-    if (!out) throw RunError("cannot write " + path);
+    if (ec) {
+      failure = "cannot create output directory '" + ctx_->out_dir() + "' (Flesh::out_dir): " + ec.message();
+    } else {
+      std::ofstream out(path);
+      out << "# date: " << now_string() << "\n" << resolved;
+      if (!out) failure = "cannot write " + path + " (Flesh::out_dir)";
+    }
   }
-  MPI_Barrier(comm_);
+  int len = static_cast<int>(failure.size());
+  MPI_Bcast(&len, 1, MPI_INT, 0, comm_);
+  failure.resize(static_cast<std::size_t>(len));
+  MPI_Bcast(failure.data(), len, MPI_CHAR, 0, comm_);
+  if (!failure.empty()) throw RunError(failure);
   for (const auto& t : active_) {
     const auto& f = catalog_.hooks().grid_factories;
     if (auto it = f.find(t); it != f.end()) {
+      ctx_->set_current(t, "create_grid");
       grid_ = it->second(GridSetup{params_, vars_, comm_});
       ctx_->set_grid(grid_.get());
     }
@@ -335,6 +348,7 @@ void Simulation::progress_line(double wall_start, double fraction_start, std::in
 void Simulation::run() {
   auto& s = *scheduler_;
   auto& ctx = *ctx_;
+  ctx.set_current("Flesh", "run");  // an error outside any scheduled function names the driver
   s.run_bin("startup", ctx);
   s.run_bin("paramcheck", ctx);
   bool recovered = false;
@@ -349,7 +363,11 @@ void Simulation::run() {
     s.invalidate_ghosts();
     s.run_bin("post_recover", ctx);
   } else {
-    for (const char* bin : {"initial", "postinitial", "analysis"}) s.run_bin(bin, ctx);
+    // A NaN written by initial data is fatal, with the function named.
+    s.set_nan_check(true);
+    for (const char* bin : {"initial", "postinitial"}) s.run_bin(bin, ctx);
+    s.set_nan_check(false);
+    s.run_bin("analysis", ctx);
   }
   if (!s.bin_empty("evol")) evolve();
   s.run_bin("terminate", ctx);
@@ -363,6 +381,7 @@ void Simulation::evolve() {
   bool has_termination = false;
   for (const auto& [thorn, fn] : catalog_.hooks().termination)
     has_termination |= std::find(active_.begin(), active_.end(), thorn) != active_.end();
+  ctx.set_current("Flesh", "evolve");
   if (!has_termination)
     throw RunError("functions are scheduled in 'evol' but no active thorn decides when the run ends (activate MoL)");
   const auto& every = params_.get<std::int64_t>("Flesh", "progress_every");
@@ -411,10 +430,14 @@ void print_usage(const ExecutableInfo& exe) {
 }
 
 // Agree on failure across ranks during set-up so that no rank waits in a collective forever.
-bool any_rank_failed(bool failed, MPI_Comm comm) {
-  int local = failed ? 1 : 0, global = 0;
-  MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MAX, comm);
-  return global != 0;
+// Returns the lowest failing rank, or -1 when every rank succeeded.
+int lowest_failing_rank(bool failed, MPI_Comm comm) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(comm, &rank);
+  MPI_Comm_size(comm, &size);
+  int local = failed ? rank : size, global = size;
+  MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MIN, comm);
+  return global < size ? global : -1;
 }
 
 }  // namespace
@@ -423,6 +446,9 @@ int run_main(int argc, char** argv, const ExecutableInfo& exe) {
   MPI_Init(&argc, &argv);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  // Failure reports travel on their own communicator, apart from the thorns' messages.
+  MPI_Comm error_comm = MPI_COMM_NULL;
+  MPI_Comm_dup(MPI_COMM_WORLD, &error_comm);
   std::vector<std::string> args(argv + 1, argv + argc);
   enum class Mode { run, describe, schedule, grid, parfile } mode = Mode::run;
   std::string describe_thorn;
@@ -499,12 +525,9 @@ int run_main(int argc, char** argv, const ExecutableInfo& exe) {
     // InputError already reads "file:line:col: error: ..."; prefix plain set-up failures.
     if (!dynamic_cast<const InputError*>(&e)) error = "error: " + error;
   }
-  if (any_rank_failed(!error.empty(), MPI_COMM_WORLD)) {
-    // Set-up is the same on every rank, so rank 0 speaks for all; a rank that failed alone speaks too.
-    int rank0_failed = rank == 0 && !error.empty();
-    MPI_Bcast(&rank0_failed, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    if (rank == 0 && !error.empty()) std::cerr << error << std::endl;
-    if (rank != 0 && !error.empty() && !rank0_failed) std::cerr << "[rank " << rank << "] " << error << std::endl;
+  if (const int lowest = lowest_failing_rank(!error.empty(), MPI_COMM_WORLD); lowest >= 0) {
+    // Set-up is the same on every rank: the lowest failing rank speaks for all, once.
+    if (rank == lowest) std::cerr << (rank > 0 ? "[rank " + std::to_string(rank) + "] " : std::string()) << error << std::endl;
     MPI_Finalize();
     return 1;
   }
@@ -528,13 +551,23 @@ int run_main(int argc, char** argv, const ExecutableInfo& exe) {
     }
   } catch (const std::exception& e) {
     const Context& ctx = sim->context();
-    std::cerr << "ERROR [rank " << rank << "] in " << ctx.current_thorn() << "::" << ctx.current_function() << ": "
-              << e.what() << std::endl;
-    // A failure on one rank must not leave the others waiting in a collective.
-    MPI_Abort(MPI_COMM_WORLD, 1);
+    int nranks = 1;
+    MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+    std::string message = failure_message(e, ctx.current_thorn(), ctx.current_function(), rank, nranks);
+    // A thorn may know a likely cause (MoL: a time step above the stability limit).
+    if (ctx.has_service("failure_hint"))
+      if (const auto& hint = ctx.service<std::string>("failure_hint"); !hint.empty()) message += "\n  likely cause: " + hint;
+    const FailureOutcome outcome = report_failure(message, error_comm);
+    if (!outcome.all_failed) {
+      // Some rank still runs (maybe waiting in a collective): stop them all. The lowest failing
+      // rank aborts first; the others give it time, so that the runtime names that rank.
+      if (!outcome.printed) std::this_thread::sleep_for(std::chrono::seconds(5));
+      MPI_Abort(MPI_COMM_WORLD, 1);
+    }
     exit_code = 1;
   }
   sim.reset();
+  MPI_Comm_free(&error_comm);
   MPI_Finalize();
   return exit_code;
 }

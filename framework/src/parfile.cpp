@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <regex>
 #include <set>
 
@@ -37,6 +38,8 @@ void load_into(Parfile& pf, const std::string& path, const std::string* text, st
       fs::path p = e.Scalar();
       if (p.is_relative()) p = fs::path(path).parent_path() / p;
       if (!fs::exists(p)) throw InputError(location_of(path, e), "included parfile '" + p.string() + "' does not exist");
+      if (fs::is_directory(p))
+        throw InputError(location_of(path, e), "included parfile '" + p.string() + "' is a directory; include wants YAML files");
       load_into(pf, p.string(), nullptr, stack);
     }
   }
@@ -48,8 +51,13 @@ void load_into(Parfile& pf, const std::string& path, const std::string* text, st
       if (!kv.second.IsSequence())
         throw InputError(location_of(path, kv.second), "'active_thorns' must be a list of thorn names");
       pf.active_thorns_where = key_where;
+      std::map<std::string, SourceLocation> in_this_list;
       for (const auto& t : kv.second) {
         if (!t.IsScalar()) throw InputError(location_of(path, t), "'active_thorns' entries must be thorn names");
+        // The same name twice in one list is a slip (an include may repeat thorns: lists are merged).
+        if (const auto [first, fresh] = in_this_list.emplace(t.Scalar(), location_of(path, t)); !fresh)
+          throw InputError(location_of(path, t), "thorn '" + t.Scalar() + "' is listed twice in active_thorns (first at " +
+                                                     first->second.str() + ")");
         if (std::find(pf.active_thorns.begin(), pf.active_thorns.end(), t.Scalar()) == pf.active_thorns.end()) {
           pf.active_thorns.push_back(t.Scalar());
           pf.active_where[t.Scalar()] = location_of(path, t);

@@ -364,6 +364,25 @@ std::size_t count_nan_interior(Block& b, int group, const VariableGroupSpec& g) 
   return count;
 }
 
+// "component v1 at cell (3, 0, 0), x = (0.27, 1.57, 3.14)" for the first NaN of the interior.
+std::string first_nan(Block& b, int group, const VariableGroupSpec& g) {
+  const auto st = staggering(g.centering);
+  for (int c = 0; c < g.ncomp(); ++c) {
+    Field f = b.field(group, c);
+    for (int k = 0; k < b.n[2] + (b.ng[2] > 0 || b.n[2] > 1 ? st[2] : 0); ++k)
+      for (int j = 0; j < b.n[1] + (b.ng[1] > 0 || b.n[1] > 1 ? st[1] : 0); ++j)
+        for (int i = 0; i < b.n[0] + st[0]; ++i)
+          if (std::isnan(f(i, j, k))) {
+            std::ostringstream os;
+            os << "first: component " << g.components[static_cast<std::size_t>(c)].name << " at cell (" << i << ", " << j
+               << ", " << k << "), x = (" << b.centroid(0, i) << ", " << b.centroid(1, j) << ", " << b.centroid(2, k)
+               << ")";
+            return os.str();
+          }
+  }
+  return "none";
+}
+
 }  // namespace
 
 void Scheduler::call_function(ScheduleNode& node, Context& ctx) {
@@ -429,6 +448,13 @@ void Scheduler::call_function(ScheduleNode& node, Context& ctx) {
                          " interior points of " + vars_->group(g).full_name() + " on block " + std::to_string(b->gid) +
                          " are NaN: the function declares it writes them but did not (" + it.where.str() + ")");
   }
+  if (nan_check_ && !debug_ && ctx.has_grid())
+    for (int g : declared_writes)
+      for (Block* b : ctx.grid().local_blocks())
+        if (std::size_t bad = count_nan_interior(*b, g, vars_->group(g)))
+          throw RunError(it.thorn + "::" + it.name + " wrote NaN into " + std::to_string(bad) + " interior points of " +
+                         vars_->group(g).full_name() + " on block " + std::to_string(b->gid) + " (" +
+                         first_nan(*b, g, vars_->group(g)) + "); initial data must be finite: check its parameters");
   for (int g : node.writes_interior) ghosts_valid_[static_cast<std::size_t>(g)] = false;
   for (int g : node.writes_everywhere) ghosts_valid_[static_cast<std::size_t>(g)] = true;
 }

@@ -2,20 +2,59 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace remnant {
 
-YAML::Node parse_yaml_text(const std::string& text, const std::string& file) {
-  try {
-    return YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    throw InputError(location_of(file, e.mark), "YAML syntax error: " + e.msg);
+namespace {
+
+std::string where_short(const YAML::Mark& m) { return std::to_string(m.line + 1) + ":" + std::to_string(m.column + 1); }
+
+// yaml-cpp keeps the last of two equal keys without a word: refuse them, in every map of the tree.
+void refuse_duplicate_keys(const YAML::Node& node, const std::string& file) {
+  if (node.IsMap()) {
+    std::map<std::string, YAML::Mark> seen;
+    for (const auto& kv : node) {
+      if (kv.first.IsScalar()) {
+        const auto [it, fresh] = seen.emplace(kv.first.Scalar(), kv.first.Mark());
+        if (!fresh)
+          throw InputError(location_of(file, kv.first), "duplicate key '" + kv.first.Scalar() + "' (first at line " +
+                                                            where_short(it->second) +
+                                                            "); YAML keeps only one of them: remove or merge the other");
+      }
+      refuse_duplicate_keys(kv.second, file);
+    }
+  } else if (node.IsSequence()) {
+    for (const auto& e : node) refuse_duplicate_keys(e, file);
   }
 }
 
+}  // namespace
+
+YAML::Node parse_yaml_text(const std::string& text, const std::string& file) {
+  std::vector<YAML::Node> docs;
+  try {
+    docs = YAML::LoadAll(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(location_of(file, e.mark), "YAML syntax error: " + e.msg);
+  }
+  // A second '---' document would be ignored silently: refuse it (empty trailing documents are harmless).
+  for (std::size_t i = 1; i < docs.size(); ++i)
+    if (!docs[i].IsNull())
+      throw InputError(location_of(file, docs[i]),
+                       "a second YAML document (after '---'): a file holds one document; remove the '---' line "
+                       "or merge the two parts");
+  if (docs.empty()) return YAML::Node();
+  refuse_duplicate_keys(docs[0], file);
+  return docs[0];
+}
+
 YAML::Node load_yaml_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw InputError({path, 0, 0}, "is a directory, not a YAML file");
   std::ifstream in(path);
   if (!in) throw InputError({path, 0, 0}, "cannot open file");
   std::stringstream ss;

@@ -123,3 +123,38 @@ TEST(Parfile, MalformedOverride) {
   Parfile pf;
   expect_error<InputError>([&] { pf.apply_override("Wave:amplitude=1", 3); }, {"command line argument 3", "Thorn::parameter=value"});
 }
+
+// yaml-cpp keeps the last of two equal keys silently; the parfile reader refuses them.
+TEST(Parfile, DuplicateKeysAreErrors) {
+  auto d = temp_dir("parfile_dupkey");
+  auto f = write_file(d / "a.yaml", "active_thorns: [Wave]\nWave:\n  amplitude: 1\n  amplitude: 2\n");
+  expect_error<InputError>([&] { Parfile::load(f); }, {f + ":4:3", "duplicate key 'amplitude'", "first at line 3:3"});
+  auto g = write_file(d / "b.yaml", "active_thorns: [Wave]\nWave:\n  amplitude: 1\nWave:\n  wavelength: 2\n");
+  expect_error<InputError>([&] { Parfile::load(g); }, {g + ":4:1", "duplicate key 'Wave'"});
+}
+
+TEST(Parfile, SecondYamlDocumentIsAnError) {
+  auto d = temp_dir("parfile_docs");
+  auto f = write_file(d / "a.yaml", "active_thorns: [Wave]\n---\nWave:\n  amplitude: 2\n");
+  expect_error<InputError>([&] { Parfile::load(f); }, {f + ":3:1", "second YAML document"});
+  // A leading '---' and an empty trailing document are one document.
+  auto g = write_file(d / "b.yaml", "---\nactive_thorns: [Wave]\n---\n");
+  EXPECT_EQ(Parfile::load(g).active_thorns, std::vector<std::string>{"Wave"});
+}
+
+TEST(Parfile, IncludeOfADirectoryIsAnError) {
+  auto d = temp_dir("parfile_incdir");
+  std::filesystem::create_directories(d / "sub");
+  auto f = write_file(d / "a.yaml", "include: sub\nactive_thorns: [Wave]\n");
+  expect_error<InputError>([&] { Parfile::load(f); }, {f + ":1:10", "is a directory"});
+}
+
+TEST(Parfile, ThornListedTwiceIsAnError) {
+  auto d = temp_dir("parfile_twice");
+  auto f = write_file(d / "a.yaml", "active_thorns: [Wave, Other, Wave]\n");
+  expect_error<InputError>([&] { Parfile::load(f); }, {f + ":1:30", "thorn 'Wave' is listed twice", "first at " + f + ":1:17"});
+  // Repeating a thorn of an included file is layering, not a slip.
+  write_file(d / "base.yaml", "active_thorns: [Wave]\n");
+  auto g = write_file(d / "b.yaml", "include: base.yaml\nactive_thorns: [Wave, Other]\n");
+  EXPECT_EQ(Parfile::load(g).active_thorns, (std::vector<std::string>{"Wave", "Other"}));
+}

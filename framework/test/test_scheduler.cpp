@@ -335,3 +335,25 @@ variables:
   EXPECT_EQ(symmetric_index(2, 2), 5);
   expect_error<RunError>([&] { (void)GroupView(b, 0, 9); }, {"expects 9 components", "holds 10"});
 }
+
+// Initial data (issue 16): a NaN in a declared output is fatal without --debug, naming the function,
+// the group, the component and the place.
+TEST(Scheduler, NaNFromInitialDataIsFatalWithTheFunctionNamed) {
+  Harness h{R"(thorn: D
+variables:
+  - {group: u, tensor: [scalar u]}
+schedule:
+  - {function: Bad, in: initial, writes: [u], description: writes one NaN}
+)"};
+  h.impl.functions["D::Bad"] = [](Context& c) {
+    for (Block* b : c.grid().local_blocks()) b->field(0, 0)(2, 0, 0) = std::numeric_limits<double>::quiet_NaN();
+  };
+  Scheduler s = h.make();
+  Context ctx(h.params, h.vars, MPI_COMM_WORLD);
+  RecordingGrid grid(h.vars);
+  ctx.set_grid(&grid);
+  EXPECT_NO_THROW(s.run_bin("initial", ctx));  // the check is on for initial data only
+  s.set_nan_check(true);
+  expect_error<RunError>([&] { s.run_bin("initial", ctx); },
+                         {"D::Bad wrote NaN into 1 interior points of D::u", "component u at cell (2, 0, 0)"});
+}

@@ -48,6 +48,8 @@ class Scheduler {
   std::string print() const;         // --print-schedule
   std::string timer_table() const;   // seconds per scheduled function
   void set_debug(bool on) { debug_ = on; }
+  // While on (initial data), a NaN in the interior of a declared output is fatal, debug or not.
+  void set_nan_check(bool on) { nan_check_ = on; }
   // Ghost state: invalidate everything (after recovery, regrid).
   void invalidate_ghosts();
   std::vector<const ScheduleNode*> all_functions() const;
@@ -64,6 +66,7 @@ class Scheduler {
   std::map<std::string, std::vector<const ScheduleItem*>> by_container_;
   const VariableRegistry* vars_;
   bool debug_ = false;
+  bool nan_check_ = false;
   double sync_seconds_ = 0;
   long sync_calls_ = 0;
 };

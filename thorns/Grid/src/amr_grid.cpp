@@ -10,6 +10,7 @@
 #include "ghost_exchange.hpp"
 #include "level_geometry.hpp"
 #include "lohner.hpp"
+#include "memory_estimate.hpp"
 #include "outer_boundary.hpp"
 #include "reduction.hpp"
 #include "refinement.hpp"
@@ -51,7 +52,10 @@ AmrGrid::AmrGrid(const GridConfig& config, const VariableRegistry& vars, MPI_Com
   install(std::move(forest), std::move(blocks));
 }
 
-AmrGrid::AmrGrid(const GridSetup& setup) : AmrGrid(config_from_parameters(setup.params), setup.vars, setup.comm) {}
+// The memory estimate comes before any allocation: a grid that cannot fit stops with the parameters named.
+AmrGrid::AmrGrid(const GridSetup& setup)
+    : AmrGrid(memory_checked(config_from_parameters(setup.params), setup.vars, setup.params, setup.comm), setup.vars,
+              setup.comm) {}
 
 AmrGrid::~AmrGrid() {
   int finalized = 0;

@@ -5,6 +5,7 @@
 #include "Grid/amr_grid.hpp"
 #include "config.hpp"
 #include "forest.hpp"
+#include "memory_estimate.hpp"
 
 namespace remnant::grid {
 
@@ -47,8 +48,12 @@ std::string AmrGrid::describe() const {
            })
         << "\n";
   }
+  const MemoryEstimate memory = estimate_memory(config_, *vars_, f.total_blocks(), nranks_);
   out << "  ranks       " << nranks_ << ", blocks per rank " << min_blocks
       << (min_blocks == max_blocks ? "" : " to " + std::to_string(max_blocks)) << "\n"
+      << "  memory      about " << format_bytes(memory.bytes_per_rank) << " per rank (" << format_bytes(memory.bytes_per_block)
+      << " per block: variables with ghosts, Runge-Kutta copies); this machine has "
+      << format_bytes(machine_memory_bytes()) << "\n"
       << "  ghosts      " << config_.ghost_zones << "\n"
       << "  min spacing " << min_spacing_ << " (proper length)\n"
       << "  boundaries  ";

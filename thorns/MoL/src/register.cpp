@@ -24,7 +24,16 @@ struct State {
   // Copy of every evolved group at the start of the step, per local block.
   std::map<std::pair<std::int64_t, int>, std::vector<double>> u0;
   std::vector<std::int64_t> u0_blocks;  // the local blocks u0 was made for (a regrid changes them)
+  std::int64_t first_iteration = -1;    // of this process's run (a recovered run starts later)
+  bool warned_dt = false;
+  // Published as service "failure_hint": the driver adds it to a fatal error's message.
+  std::shared_ptr<std::string> failure_hint = std::make_shared<std::string>();
 };
+
+// Largest stable Courant number dt * max(signal speed / cell width) of each method: SSP-RK3,
+// SSP-RK2 and forward Euler all have SSP coefficient 1, so they keep a scheme that is stable with
+// forward Euler at Courant number 1 stable up to 1 (the thorns' CFL limits are defined that way).
+constexpr double kStableCourant = 1.0;
 
 State& state(Context& ctx) {
   if (!ctx.has_service("MoL::state")) {
@@ -32,6 +41,7 @@ State& state(Context& ctx) {
     s->stages = &runge_kutta_stages(ctx.param<std::string>("MoL", "method"));
     s->wall_start = MPI_Wtime();
     ctx.publish("MoL::state", s);
+    ctx.publish("failure_hint", s->failure_hint);
   }
   return ctx.service<State>("MoL::state");
 }
@@ -45,20 +55,53 @@ void check_parameters(Context& ctx) {
     throw InputError(ctx.params().origin("MoL", "final_time"),
                      "the run would never end: set MoL::final_time, MoL::max_iterations or MoL::max_walltime_hours");
   if (ctx.vars().evolved().empty()) ctx.warn("no active thorn declares an evolved variable group: nothing to integrate");
+  const double cfl = ctx.param<double>("MoL", "cfl");
+  if (ctx.param<double>("MoL", "dt") <= 0 && cfl > kStableCourant && ctx.rank() == 0) {
+    std::ostringstream os;
+    os << "MoL::cfl = " << cfl << " is above the stability limit " << kStableCourant
+       << " of MoL::method = " << ctx.param<std::string>("MoL", "method")
+       << ": the time step is too large and the run will likely blow up (the default is 0.4)";
+    ctx.warn(os.str());
+  }
+}
+
+// For the first steps of a fixed MoL::dt, and for every step from the CFL condition: the Courant
+// number of the step, a warning when it is above the stability limit, and the hint the driver adds
+// to an error (a failed primitive recovery is the usual symptom of a too large time step).
+void check_courant_number(Context& ctx, State& s, double dt, double inv, bool fixed) {
+  const double courant = dt * inv;
+  std::string& hint = *s.failure_hint;
+  if (!(courant > kStableCourant)) {
+    hint.clear();
+    return;
+  }
+  std::ostringstream os;
+  os << "the time step dt = " << dt << " is " << courant / kStableCourant << " times the largest stable one ("
+     << kStableCourant / inv << ", Courant number " << kStableCourant << " of MoL::method = "
+     << ctx.param<std::string>("MoL", "method") << "): lower " << (fixed ? "MoL::dt" : "MoL::cfl");
+  hint = os.str();
+  if (fixed && !s.warned_dt && ctx.rank() == 0) ctx.warn(hint);
+  s.warned_dt = true;
 }
 
 void compute_time_step(Context& ctx) {
+  State& s = state(ctx);
+  if (s.first_iteration < 0) s.first_iteration = ctx.iteration();
   const double fixed = ctx.param<double>("MoL", "dt");
-  double dt = fixed;
+  double dt = fixed, inv = 0;
   if (dt <= 0) {
-    const double inv = ctx.max_inverse_dt();
+    inv = ctx.max_inverse_dt();
     if (!(inv > 0) || !std::isfinite(inv))
       throw RunError("no thorn limits the time step (max 1/dt = " + std::to_string(inv) + "); set MoL::dt");
     dt = ctx.param<double>("MoL", "cfl") / inv;
+  } else if (ctx.iteration() - s.first_iteration < 3) {
+    // A fixed step is compared with the CFL limit in the first steps only (the limit costs a pass).
+    inv = ctx.max_inverse_dt();
   }
   // Land exactly on final_time so that outputs at the end are comparable between resolutions.
   const double final_time = ctx.param<double>("MoL", "final_time");
   if (final_time >= 0 && ctx.time() + dt > final_time) dt = final_time - ctx.time();
+  if (inv > 0 && std::isfinite(inv)) check_courant_number(ctx, s, dt, inv, fixed > 0);
   ctx.clock().dt = dt;
 }
 

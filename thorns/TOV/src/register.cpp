@@ -4,9 +4,9 @@
 #include <cstdio>
 #include <numbers>
 
-#include "EOS/beta_equilibrium.hpp"
-#include "EOS/eos.hpp"
 #include "TOV/tov_solver.hpp"
+#include "check_parameters.hpp"
+#include "slice_from_parameters.hpp"
 #include "remnant/context.hpp"
 #include "remnant/coordinates.hpp"
 #include "remnant/registrar.hpp"
@@ -16,24 +16,8 @@
 namespace remnant::tov {
 namespace {
 
-std::unique_ptr<ColdSlice> make_slice(const Context& ctx) {
-  if (ctx.param<std::string>("TOV", "eos_slice") == "polytrope")
-    return polytrope_slice(ctx.param<double>("TOV", "poly_K"), ctx.param<double>("TOV", "poly_gamma"),
-                           ctx.param<double>("TOV", "ye"));
-  const auto* table = ctx.service<eos::EOS>("eos").tabulated();
-  if (!table) throw RunError("TOV::eos_slice = tabulated_beta needs EOS::type = tabulated");
-  // A fine logarithmic density grid over the table, beta equilibrium at T_min.
-  const auto& b = table->bounds();
-  std::vector<double> rhos;
-  const int n = 800;
-  for (int i = 0; i < n; ++i) rhos.push_back(b.rho_min * std::pow(b.rho_max / b.rho_min, double(i) / (n - 1)));
-  rhos.back() = b.rho_max;
-  const eos::BetaSlice s = eos::beta_equilibrium_slice(*table, b.T_min, rhos);
-  return tabulated_slice(s.rho, s.press, s.eps, s.ye);
-}
-
 void initial(Context& ctx) {
-  const auto slice = make_slice(ctx);
+  const auto slice = slice_from_parameters(ctx);
   const TovStar star(*slice, ctx.param<double>("TOV", "rho_central"),
                      static_cast<int>(ctx.param<std::int64_t>("TOV", "samples")));
   char line[256];
@@ -87,4 +71,7 @@ void initial(Context& ctx) {
 }  // namespace
 }  // namespace remnant::tov
 
-REMNANT_REGISTER_THORN(TOV) { reg.function("TOV_Initial", remnant::tov::initial); }
+REMNANT_REGISTER_THORN(TOV) {
+  reg.function("TOV_CheckParameters", remnant::tov::check_parameters);
+  reg.function("TOV_Initial", remnant::tov::initial);
+}
