@@ -134,9 +134,21 @@ TEST(Files, IterationNamesAndOrder) {
   ASSERT_EQ(l.size(), 3u);
   EXPECT_EQ(l[0], checkpoint_path(d.string(), 12));
   EXPECT_EQ(l[2], checkpoint_path(d.string(), 4));
-  prune_checkpoints(d.string(), 2, "");
+  prune_checkpoints(d.string(), 2, 12);
   EXPECT_EQ(list_checkpoints(d.string()).size(), 2u);
   EXPECT_FALSE(std::filesystem::exists(checkpoint_path(d.string(), 16) + ".tmp"));
+}
+
+// A file named after a later iteration than the one just written (one that recovery rejected, e.g.
+// a renamed copy) must not count among the newest: with keep = 1 it would delete every new one.
+TEST(Files, PruneIgnoresCheckpointsBeyondTheCurrentIteration) {
+  const auto d = temp_dir("prune_future");
+  for (int it : {30, 35, 32, 34}) std::ofstream(checkpoint_path(d.string(), it)) << "x";
+  const auto deleted = prune_checkpoints(d.string(), 1, 34);
+  EXPECT_EQ(deleted.size(), 2u);
+  EXPECT_TRUE(std::filesystem::exists(checkpoint_path(d.string(), 34)));
+  EXPECT_TRUE(std::filesystem::exists(checkpoint_path(d.string(), 35)));
+  EXPECT_FALSE(std::filesystem::exists(checkpoint_path(d.string(), 32)));
 }
 
 TEST(Packing, RoundTripOfInteriorPoints) {
