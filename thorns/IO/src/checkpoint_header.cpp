@@ -121,8 +121,9 @@ CheckpointHeader read_checkpoint_header(hid_t file) {
       throw RunError("its format is '" + h.format + "'; this executable reads '" + checkpoint_format + "'");
     throw RunError("it is not a Remnant checkpoint (format '" + h.format + "')");
   }
-  if (!h5::has_attr(file, "complete") || h5::read_attr_int(file, "complete") != 1)
-    throw RunError("it is incomplete (no 'complete' mark: the writer died)");
+  if (!h5::has_attr(file, "complete")) throw RunError("it is incomplete (no 'complete' mark: the writer died)");
+  if (const auto mark = h5::read_attr_int(file, "complete"); mark != 1)
+    throw RunError("its 'complete' mark is " + std::to_string(mark) + ", not 1 (corrupt file)");
   h.iteration = h5::read_attr_int(file, "iteration");
   h.time = h5::read_attr_double(file, "time");
   h.dt = h5::read_attr_double(file, "dt");
