@@ -106,15 +106,45 @@ Recovery recover_from(const fs::path& dir, const fs::path& scratch) {
   return r;
 }
 
+// A run to 8 with checkpoints at 4 and 8 under `root`; returns their folder.
+fs::path write_checkpoints(const fs::path& root) {
+  fs::remove_all(root);
+  Simulation sim(catalog(), options(root / "run", {}), MPI_COMM_SELF);
+  sim.setup_output_and_grid();
+  sim.run();
+  return root / "run" / "checkpoints";
+}
+
+// A mesh entry the Grid cannot hold, under a matching metadata checksum (as a faulty writer would
+// leave it): the Grid's refusal must reject the file by name and recovery go on with the previous.
+TEST(CheckpointRecovery, MeshTheGridRefusesFallsBackToThePreviousCheckpoint) {
+  const fs::path root = fs::temp_directory_path() / ("remnant_forged_mesh_" + std::to_string(::getpid()));
+  const fs::path dir = write_checkpoints(root);
+  const std::string newest = checkpoint_path(dir.string(), 8);
+  {
+    hid_t f = H5Fopen(newest.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(f, 0);
+    CheckpointHeader h = read_checkpoint_header(f);
+    h.blocks[4 * 1 + 1] = 99;  // block 1 at index i = 99: outside a 16-cell domain of 8-cell blocks
+    hid_t d = H5Dopen2(f, "mesh/blocks", H5P_DEFAULT);
+    ASSERT_GE(H5Dwrite(d, H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, h.blocks.data()), 0);
+    H5Dclose(d);
+    hid_t a = H5Aopen(f, "metadata_checksum", H5P_DEFAULT);
+    const auto sum = static_cast<std::int64_t>(metadata_checksum(h));
+    ASSERT_GE(H5Awrite(a, H5T_NATIVE_INT64, &sum), 0);
+    H5Aclose(a);
+    H5Fclose(f);
+  }
+  const Recovery r = recover_from(dir, root);
+  EXPECT_EQ(r.used, checkpoint_path(dir.string(), 4)) << r.error << r.log;
+  EXPECT_NE(r.log.find("checkpoint.it0000000008.h5 is unusable: the checkpoint's mesh has a block"), std::string::npos)
+      << r.log;
+  fs::remove_all(root);
+}
+
 TEST(CheckpointBitFlips, EveryFlipIsUsedIdenticallyOrRejectedByName) {
   const fs::path root = fs::temp_directory_path() / ("remnant_bitflips_" + std::to_string(::getpid()));
-  fs::remove_all(root);
-  {
-    Simulation sim(catalog(), options(root / "run", {}), MPI_COMM_SELF);
-    sim.setup_output_and_grid();
-    sim.run();
-  }
-  const fs::path dir = root / "run" / "checkpoints";
+  const fs::path dir = write_checkpoints(root);
   const fs::path newest = checkpoint_path(dir.string(), 8), previous = checkpoint_path(dir.string(), 4);
   ASSERT_TRUE(fs::exists(newest) && fs::exists(previous));
 
