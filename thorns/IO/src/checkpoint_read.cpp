@@ -180,8 +180,11 @@ bool recover_checkpoint(Context& ctx, const std::string& mode, const CheckpointS
       ctx.warn("checkpoint " + candidates[i] + " is unusable: " + why + (more ? "; trying the previous one" : ""));
     failures += "\n    " + candidates[i] + ": " + why;
   }
-  throw RunError("IO::recover: no usable checkpoint" + std::string(mode == "auto" ? " in " + settings.dir : "") + ":" +
-                 failures + "\n  remove them (or set IO::recover = no) to start from initial data");
+  if (mode != "auto")
+    throw RunError("IO::recover: " + mode + " cannot be used:" + failures +
+                   "\n  give IO::recover the path of a checkpoint (<dir>/checkpoint.it<iteration>.h5), auto or no");
+  throw RunError("IO::recover: no usable checkpoint in " + settings.dir + ":" + failures +
+                 "\n  move them aside (or set IO::recover = no) to start from initial data");
 }
 
 }  // namespace remnant::io
