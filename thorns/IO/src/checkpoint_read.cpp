@@ -98,7 +98,8 @@ bool on_every_rank(F&& step, std::string& msg, MPI_Comm comm) {
 }
 
 // One candidate: returns "" when restored, else why it is unusable (the same on every rank).
-// Nothing of the run changes before the whole file has passed every check.
+// The data, clock and thorn state change only once the whole file has passed every check (the
+// mesh is rebuilt before the blocks are read; the next candidate, if any, rebuilds it again).
 std::string try_checkpoint(Context& ctx, const std::string& path, StepHistory* history) {
   h5::QuietErrors quiet;
   CheckpointHeader h;
