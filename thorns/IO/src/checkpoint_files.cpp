@@ -56,17 +56,35 @@ void commit_file(const std::string& tmp, const std::string& final_path) {
   fsync_path(fs::path(final_path).parent_path().string(), true);
 }
 
-std::vector<std::string> prune_checkpoints(const std::string& dir, int keep, const std::string& except) {
+std::string writable_folder_problem(const std::string& dir) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (ec) return "cannot create the folder (" + ec.message() + ")";
+  if (!fs::is_directory(dir, ec)) return "it is not a folder";
+  const std::string probe = dir + "/.remnant-write-test." + std::to_string(::getpid());
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+  if (fd < 0) return std::string("cannot create a file in it (") + std::strerror(errno) + ")";
+  const bool written = ::write(fd, "x", 1) == 1;
+  const int err = errno;
+  ::close(fd);
+  ::unlink(probe.c_str());
+  if (!written) return std::string("cannot write a file in it (") + std::strerror(err) + ")";
+  return "";
+}
+
+std::vector<std::string> prune_checkpoints(const std::string& dir, int keep, std::int64_t current) {
   std::vector<std::string> deleted;
-  const auto all = list_checkpoints(dir);
-  for (std::size_t i = static_cast<std::size_t>(std::max(keep, 1)); i < all.size(); ++i) {
+  std::size_t kept = 0;
+  for (const auto& path : list_checkpoints(dir)) {
+    if (iteration_of(fs::path(path).filename().string(), "checkpoint", "h5") > current) continue;
+    if (kept++ < static_cast<std::size_t>(std::max(keep, 1))) continue;
     std::error_code ec;
-    if (fs::remove(all[i], ec)) deleted.push_back(all[i]);
+    if (fs::remove(path, ec)) deleted.push_back(path);
   }
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     const std::string name = e.path().filename().string();
-    if (name.rfind("checkpoint.it", 0) == 0 && e.path().extension() == ".tmp" && e.path().string() != except) {
+    if (name.rfind("checkpoint.it", 0) == 0 && e.path().extension() == ".tmp") {
       std::error_code ec2;
       if (fs::remove(e.path(), ec2)) deleted.push_back(e.path().string());
     }

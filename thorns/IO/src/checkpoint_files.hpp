@@ -13,8 +13,11 @@ std::vector<std::string> list_checkpoints(const std::string& dir);
 // fsync(path), rename(path, final), fsync(directory): the rename is atomic, so a crash leaves
 // either the old state or the whole new file. Throws RunError.
 void commit_file(const std::string& tmp, const std::string& final_path);
-// Deletes all but the newest `keep` checkpoints and any leftover *.tmp except `except`;
-// returns the deleted names.
-std::vector<std::string> prune_checkpoints(const std::string& dir, int keep, const std::string& except);
+// "" when `dir` exists or can be created and a file can be created in it; else why not.
+std::string writable_folder_problem(const std::string& dir);
+// Deletes all but the newest `keep` checkpoints up to iteration `current` (the one just written)
+// and any leftover *.tmp; returns the deleted names. Files named after a later iteration are left
+// alone: they are ones recovery rejected (or foreign copies), and must not count as the newest.
+std::vector<std::string> prune_checkpoints(const std::string& dir, int keep, std::int64_t current);
 
 }  // namespace remnant::io

@@ -9,6 +9,7 @@
 #include "block_packing.hpp"
 #include "checkpoint.hpp"
 #include "checkpoint_files.hpp"
+#include "checkpoint_header.hpp"
 #include "checksum.hpp"
 #include "h5.hpp"
 #include "parameter_record.hpp"
@@ -33,46 +34,8 @@ bool agree(bool ok, std::string& msg, MPI_Comm comm) {
   return false;
 }
 
-struct Header {
-  std::int64_t iteration = 0;
-  double time = 0, dt = 0;
-  std::string parameters, thorns, git;
-  std::vector<std::pair<std::string, std::string>> states;
-  std::vector<BlockKey> blocks;
-  std::vector<std::int64_t> cells;
-};
-
-Header read_header(hid_t file, const Context& ctx) {
-  Header h;
-  if (!h5::has_attr(file, "complete") || h5::read_attr_int(file, "complete") != 1)
-    throw RunError("it is incomplete (no 'complete' mark: the writer died)");
-  if (h5::read_attr_string(file, "format") != "remnant-checkpoint-1")
-    throw RunError("unknown format '" + h5::read_attr_string(file, "format") + "'");
-  h.iteration = h5::read_attr_int(file, "iteration");
-  h.time = h5::read_attr_double(file, "time");
-  h.dt = h5::read_attr_double(file, "dt");
-  h.parameters = h5::read_string(file, "parameters");
-  h.thorns = h5::read_string(file, "provenance/thorns");
-  h.git = h5::read_attr_string(file, "git_revision");
-  std::string all_text = h.parameters;
-  for (const auto& s : ctx.persistent_states()) {
-    if (!h5::exists(file, "persistent/" + s.thorn))
-      throw RunError("it holds no persistent state of thorn " + s.thorn);
-    h.states.emplace_back(s.thorn, h5::read_string(file, "persistent/" + s.thorn));
-    all_text += s.thorn + "\n" + h.states.back().second;
-  }
-  if (static_cast<std::uint64_t>(h5::read_attr_int(file, "text_checksum")) != checksum(all_text))
-    throw RunError("the checksum of its parameters and thorn state does not match (corrupt file)");
-  const auto blocks = h5::read_int64s(file, "mesh/blocks");
-  for (std::size_t i = 0; i + 3 < blocks.size(); i += 4)
-    h.blocks.push_back(BlockKey{static_cast<int>(blocks[i]), {blocks[i + 1], blocks[i + 2], blocks[i + 3]}});
-  h.cells = h5::read_int64s(file, "mesh/cells");
-  if (h.cells.size() != 3 * h.blocks.size()) throw RunError("its mesh tables disagree (corrupt file)");
-  return h;
-}
-
 // Fatal (not "try the previous one"): the run itself differs from the one that wrote the file.
-void check_compatible(const Context& ctx, const Header& h, const std::string& path) {
+void check_compatible(const Context& ctx, const CheckpointHeader& h, const std::string& path) {
   const Provenance now = provenance_of(ctx);
   if (h.thorns != now.thorns)
     throw RunError("IO::recover: " + path + " was written with active thorns [" + h.thorns + "], this run has [" +
@@ -93,11 +56,11 @@ void check_compatible(const Context& ctx, const Header& h, const std::string& pa
 using Key = std::tuple<int, std::int64_t, std::int64_t, std::int64_t>;
 
 // Reads and verifies this rank's blocks of every checkpointed group into `data` (per group).
-std::vector<std::vector<double>> read_blocks(hid_t file, Context& ctx, const Header& h, std::vector<std::size_t>& rows) {
+std::vector<std::vector<double>> read_blocks(hid_t file, Context& ctx, const CheckpointHeader& h) {
   std::map<Key, std::size_t> row_of;
-  for (std::size_t i = 0; i < h.blocks.size(); ++i)
-    row_of[{h.blocks[i].level, h.blocks[i].index[0], h.blocks[i].index[1], h.blocks[i].index[2]}] = i;
-  rows.clear();
+  for (std::size_t i = 0; i < h.block_count(); ++i)
+    row_of[{static_cast<int>(h.blocks[4 * i]), h.blocks[4 * i + 1], h.blocks[4 * i + 2], h.blocks[4 * i + 3]}] = i;
+  std::vector<std::size_t> rows;
   for (Block* b : ctx.grid().local_blocks()) {
     const auto it = row_of.find({b->level, b->index[0], b->index[1], b->index[2]});
     if (it == row_of.end()) throw RunError("a block of the rebuilt mesh is not in the checkpoint");
@@ -106,53 +69,63 @@ std::vector<std::vector<double>> read_blocks(hid_t file, Context& ctx, const Hea
         throw RunError("its blocks have other sizes than this grid's (Grid::block_size changed?)");
     rows.push_back(it->second);
   }
-  std::vector<hsize_t> hrows(rows.begin(), rows.end());
   std::vector<std::vector<double>> data;
   for (const auto& spec : ctx.vars().groups()) {
     if (!spec.checkpoint) continue;
-    const std::string name = "groups/" + spec.full_name();
-    if (!h5::exists(file, name)) throw RunError("it holds no variable group " + spec.full_name());
-    const auto shape = h5::shape_of(file, name);
-    std::size_t width = 0;
-    for (Block* b : ctx.grid().local_blocks()) width = packed_size(*b, spec, ctx.grid().dimension());
-    if (!rows.empty() && (shape.size() != 2 || shape[1] != width))
-      throw RunError("its group " + spec.full_name() + " has another shape than this grid's");
-    data.push_back(rows.empty() ? std::vector<double>{} : h5::read_rows(file, name, hrows));
-    const auto sums = h5::read_uint64s(file, "checksums/" + spec.full_name());
-    for (std::size_t r = 0; r < rows.size(); ++r)
-      if (sums.size() != h.blocks.size() || checksum(data.back().data() + r * width, width) != sums[rows[r]])
-        throw RunError("block " + std::to_string(rows[r]) + " of " + spec.full_name() +
-                       " does not match its checksum (corrupt file)");
+    const CheckpointGroup* g = nullptr;
+    for (const auto& c : h.groups)
+      if (c.name == spec.full_name()) g = &c;
+    if (!g) throw RunError("it holds no variable group " + spec.full_name());
+    for (Block* b : ctx.grid().local_blocks())
+      if (packed_size(*b, spec, ctx.grid().dimension()) != g->width)
+        throw RunError("its group " + spec.full_name() + " has another shape than this grid's");
+    data.push_back(read_verified_rows(file, *g, rows));
   }
   return data;
 }
 
-// One candidate: returns "" when restored, else why it is unusable (the same on every rank).
-std::string try_checkpoint(Context& ctx, const std::string& path) {
-  h5::QuietErrors quiet;
-  Header h;
-  std::unique_ptr<h5::Handle> file;
-  std::string msg;
+// Runs `step` on every rank; true when it succeeded everywhere, else `msg` is the first failure's.
+template <class F>
+bool on_every_rank(F&& step, std::string& msg, MPI_Comm comm) {
   bool ok = true;
   try {
-    file = std::make_unique<h5::Handle>(h5::open_file_serial(path));
-    h = read_header(*file, ctx);
+    step();
   } catch (const std::exception& e) {
     ok = false;
     msg = e.what();
   }
-  if (!agree(ok, msg, ctx.comm())) return msg;
+  return agree(ok, msg, comm);
+}
+
+// One candidate: returns "" when restored, else why it is unusable (the same on every rank).
+// The data, clock and thorn state change only once the whole file has passed every check (the
+// mesh is rebuilt before the blocks are read; the next candidate, if any, rebuilds it again).
+std::string try_checkpoint(Context& ctx, const std::string& path, StepHistory* history) {
+  h5::QuietErrors quiet;
+  CheckpointHeader h;
+  std::unique_ptr<h5::Handle> file;
+  std::string msg;
+  const CheckpointExpectations expect = expectations_of(ctx);
+  if (!on_every_rank(
+          [&] {
+            try {
+              file = std::make_unique<h5::Handle>(h5::open_file_serial(path));
+            } catch (const std::exception& e) {
+              throw RunError(std::string("it cannot be opened as HDF5 (truncated, damaged or not an HDF5 file): ") + e.what());
+            }
+            h = read_checkpoint_header(*file);
+            validate_checkpoint_header(h, path, expect);
+          },
+          msg, ctx.comm()))
+    return msg;
   check_compatible(ctx, h, path);
-  ctx.grid().restore_blocks(h.blocks);
-  std::vector<std::size_t> rows;
+  std::vector<BlockKey> keys;
+  for (std::size_t i = 0; i < h.block_count(); ++i)
+    keys.push_back(BlockKey{static_cast<int>(h.blocks[4 * i]), {h.blocks[4 * i + 1], h.blocks[4 * i + 2], h.blocks[4 * i + 3]}});
+  // The Grid rejects a mesh it cannot hold before changing anything: then try the previous file.
+  if (!on_every_rank([&] { ctx.grid().restore_blocks(keys); }, msg, ctx.comm())) return msg;
   std::vector<std::vector<double>> data;
-  try {
-    data = read_blocks(*file, ctx, h, rows);
-  } catch (const std::exception& e) {
-    ok = false;
-    msg = e.what();
-  }
-  if (!agree(ok, msg, ctx.comm())) return msg;
+  if (!on_every_rank([&] { data = read_blocks(*file, ctx, h); }, msg, ctx.comm())) return msg;
   // Everything verified: install it.
   std::size_t g = 0;
   const int dim = ctx.grid().dimension();
@@ -171,14 +144,17 @@ std::string try_checkpoint(Context& ctx, const std::string& path) {
   clock.time = h.time;
   clock.dt = h.dt;
   clock.substep = 0;
-  std::size_t s = 0;
-  for (const auto& p : ctx.persistent_states()) p.restore(ctx, h.states[s++].second);
+  for (const auto& p : ctx.persistent_states())
+    for (const auto& [thorn, text] : h.states)
+      if (thorn == p.thorn) p.restore(ctx, text);
+  if (history) *history = StepHistory{h.dt_min, h.dt_max};
   return "";
 }
 
 }  // namespace
 
-bool recover_checkpoint(Context& ctx, const std::string& mode, const CheckpointSettings& settings, std::string* used_path) {
+bool recover_checkpoint(Context& ctx, const std::string& mode, const CheckpointSettings& settings, std::string* used_path,
+                        StepHistory* history) {
   if (mode == "no") return false;
   std::vector<std::string> candidates;
   if (mode == "auto") {
@@ -193,7 +169,7 @@ bool recover_checkpoint(Context& ctx, const std::string& mode, const CheckpointS
   }
   std::string failures;
   for (std::size_t i = 0; i < candidates.size(); ++i) {
-    const std::string why = try_checkpoint(ctx, candidates[i]);
+    const std::string why = try_checkpoint(ctx, candidates[i], history);
     if (why.empty()) {
       ctx.info("recovered from " + candidates[i] + " at iteration " + std::to_string(ctx.iteration()) + ", t = " +
                std::to_string(ctx.time()));
@@ -205,8 +181,11 @@ bool recover_checkpoint(Context& ctx, const std::string& mode, const CheckpointS
       ctx.warn("checkpoint " + candidates[i] + " is unusable: " + why + (more ? "; trying the previous one" : ""));
     failures += "\n    " + candidates[i] + ": " + why;
   }
-  throw RunError("IO::recover: no usable checkpoint" + std::string(mode == "auto" ? " in " + settings.dir : "") + ":" +
-                 failures + "\n  remove them (or set IO::recover = no) to start from initial data");
+  if (mode != "auto")
+    throw RunError("IO::recover: " + mode + " cannot be used:" + failures +
+                   "\n  give IO::recover the path of a checkpoint (<dir>/checkpoint.it<iteration>.h5), auto or no");
+  throw RunError("IO::recover: no usable checkpoint in " + settings.dir + ":" + failures +
+                 "\n  move them aside (or set IO::recover = no) to start from initial data");
 }
 
 }  // namespace remnant::io

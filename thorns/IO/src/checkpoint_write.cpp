@@ -10,6 +10,7 @@
 #include "block_packing.hpp"
 #include "checkpoint.hpp"
 #include "checkpoint_files.hpp"
+#include "checkpoint_header.hpp"
 #include "checksum.hpp"
 #include "h5.hpp"
 #include "parameter_record.hpp"
@@ -42,7 +43,7 @@ std::vector<std::int64_t> gather_table(const std::vector<std::int64_t>& mine, in
 
 }  // namespace
 
-std::string write_checkpoint(Context& ctx, const CheckpointSettings& settings) {
+std::string write_checkpoint(Context& ctx, const CheckpointSettings& settings, const StepHistory& history) {
   const double t0 = MPI_Wtime();
   GridDriver& grid = ctx.grid();
   MPI_Comm comm = ctx.comm();
@@ -75,39 +76,41 @@ std::string write_checkpoint(Context& ctx, const CheckpointSettings& settings) {
   for (auto i : order) sorted_rows.push_back(rows[i]);
   const auto nb = static_cast<hsize_t>(keys.size());
 
-  // Persistent thorn state and parameters are the same on every rank; rank 0's text is stored.
-  std::vector<std::pair<std::string, std::string>> states;
-  for (const auto& s : ctx.persistent_states()) states.emplace_back(s.thorn, s.save(ctx));
-  const std::string params = parameter_record(ctx);
-  std::string all_text = params;
-  for (const auto& [t, s] : states) all_text += t + "\n" + s;
+  CheckpointHeader header;
+  header.iteration = ctx.iteration();
+  header.time = ctx.time();
+  header.dt = ctx.dt();
+  header.dt_min = history.dt_min;
+  header.dt_max = history.dt_max;
+  header.nranks = ctx.nranks();
+  header.dimension = dim;
+  header.coordinates = to_string(grid.coordinates());
+  header.parameters = parameter_record(ctx);
+  const Provenance prov = provenance_of(ctx);
+  header.thorns = prov.thorns;
+  header.git = prov.git_revision;
+  // Persistent thorn state is the same on every rank; rank 0's text is stored.
+  for (const auto& s : ctx.persistent_states()) header.states.emplace_back(s.thorn, s.save(ctx));
+  for (const auto& k : keys) header.blocks.insert(header.blocks.end(), {k.level, k.index[0], k.index[1], k.index[2]});
 
   std::int64_t nans = 0;
   {
     h5::Handle file = h5::create_file(tmp, comm);
-    h5::write_attr(file, "format", std::string("remnant-checkpoint-1"));
-    h5::write_attr(file, "iteration", ctx.iteration());
-    h5::write_attr(file, "time", ctx.time());
-    h5::write_attr(file, "dt", ctx.dt());
-    h5::write_attr(file, "nranks", static_cast<std::int64_t>(ctx.nranks()));
-    h5::write_attr(file, "coordinates", std::string(to_string(grid.coordinates())));
-    h5::write_attr(file, "dimension", static_cast<std::int64_t>(dim));
-    h5::write_attr(file, "text_checksum", static_cast<std::int64_t>(checksum(all_text)));
-    write_provenance(file, provenance_of(ctx), writer);
-    h5::write_string(file, "parameters", params, writer);
+    h5::write_attr(file, "format", header.format);  // first: a dead writer's file still says what it is
+    write_provenance(file, prov, writer);
+    h5::write_string(file, "parameters", header.parameters, writer);
     {
       h5::Handle g = h5::create_group(file, "persistent");
-      for (const auto& [t, s] : states) h5::write_string(g, t, s, writer);
+      for (const auto& [t, s] : header.states) h5::write_string(g, t, s, writer);
     }
     {
       h5::Handle g = h5::create_group(file, "mesh");
-      std::vector<std::int64_t> blocks;
-      for (const auto& k : keys) blocks.insert(blocks.end(), {k.level, k.index[0], k.index[1], k.index[2]});
-      h5::write_array(g, "blocks", {nb, 4}, blocks, writer);
+      h5::write_array(g, "blocks", {nb, 4}, header.blocks, writer);
       std::vector<std::int64_t> mine;
       for (std::size_t i = 0; i < local.size(); ++i)
         mine.insert(mine.end(), {static_cast<std::int64_t>(rows[i]), local[i]->n[0], local[i]->n[1], local[i]->n[2]});
-      h5::write_array(g, "cells", {nb, 3}, gather_table(mine, 3, keys.size(), comm), writer);
+      header.cells = gather_table(mine, 3, keys.size(), comm);
+      h5::write_array(g, "cells", {nb, 3}, header.cells, writer);
     }
     h5::Handle groups = h5::create_group(file, "groups");
     h5::Handle sums = h5::create_group(file, "checksums");
@@ -129,15 +132,20 @@ std::string write_checkpoint(Context& ctx, const CheckpointSettings& settings) {
       unsigned long long width = per_block, max_width = 0;
       MPI_Allreduce(&width, &max_width, 1, MPI_UNSIGNED_LONG_LONG, MPI_MAX, comm);
       h5::write_rows_collective(groups, spec.full_name(), nb, {static_cast<hsize_t>(max_width)}, sorted_rows, buf.data());
+      CheckpointGroup g;
+      g.name = spec.full_name();
+      for (const auto& c : spec.components) g.components += (g.components.empty() ? "" : ",") + c.name;
+      g.centering = to_string(spec.centering);
+      g.width = max_width;
       {
         h5::Handle d(H5Dopen2(groups, spec.full_name().c_str(), H5P_DEFAULT), H5Dclose);
-        std::string comps;
-        for (const auto& c : spec.components) comps += (comps.empty() ? "" : ",") + c.name;
-        h5::write_attr(d, "components", comps);
-        h5::write_attr(d, "centering", std::string(to_string(spec.centering)));
+        h5::write_attr(d, "components", g.components);
+        h5::write_attr(d, "centering", g.centering);
       }
       const auto table = gather_table(mine, 1, keys.size(), comm);
-      h5::write_array(sums, spec.full_name(), {nb}, std::vector<std::uint64_t>(table.begin(), table.end()), writer);
+      g.sums.assign(table.begin(), table.end());
+      h5::write_array(sums, spec.full_name(), {nb}, g.sums, writer);
+      header.groups.push_back(std::move(g));
       if (++written == 1 && settings.kill_at_iteration == ctx.iteration()) {
         // Test of crash safety: die with a half-written file, as a node failure would.
         H5Fflush(file, H5F_SCOPE_GLOBAL);
@@ -145,12 +153,14 @@ std::string write_checkpoint(Context& ctx, const CheckpointSettings& settings) {
         std::raise(SIGKILL);
       }
     }
-    std::int64_t total_nans = 0;
-    MPI_Allreduce(&nans, &total_nans, 1, MPI_INT64_T, MPI_SUM, comm);
-    h5::write_attr(file, "nan_count", total_nans);
-    if (total_nans > 0 && writer)
-      ctx.warn("checkpoint at iteration " + std::to_string(ctx.iteration()) + " holds " + std::to_string(total_nans) +
+    MPI_Allreduce(&nans, &header.nan_count, 1, MPI_INT64_T, MPI_SUM, comm);
+    if (header.nan_count > 0 && writer)
+      ctx.warn("checkpoint at iteration " + std::to_string(ctx.iteration()) + " holds " + std::to_string(header.nan_count) +
                " NaN values (attribute nan_count)");
+    // Only rank 0 holds the gathered tables: its checksum goes into everyone's attribute.
+    std::uint64_t digest = writer ? metadata_checksum(header) : 0;
+    MPI_Bcast(&digest, 1, MPI_UINT64_T, 0, comm);
+    write_header_attributes(file, header, digest);
     // Last: a reader that sees `complete` knows every dataset before it was written.
     h5::write_attr(file, "complete", std::int64_t{1});
     groups.reset();  // a parallel file closes only when nothing in it is open
@@ -161,7 +171,7 @@ std::string write_checkpoint(Context& ctx, const CheckpointSettings& settings) {
   std::vector<std::string> pruned;
   if (writer) {
     commit_file(tmp, path);
-    pruned = prune_checkpoints(settings.dir, settings.keep, "");
+    pruned = prune_checkpoints(settings.dir, settings.keep, ctx.iteration());
   }
   MPI_Barrier(comm);
   if (writer) {

@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "checkpoint.hpp"
+#include "checkpoint_files.hpp"
 #include "grid_output.hpp"
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
@@ -18,6 +19,7 @@ struct State {
   CheckpointSettings checkpoint;
   std::int64_t last_checkpoint_iteration = -1;
   double last_checkpoint_wall = 0;
+  StepHistory steps;
 };
 
 State& state(Context& ctx) {
@@ -28,6 +30,29 @@ State& state(Context& ctx) {
 std::array<double, 3> point(const Context& ctx, const char* name) {
   const auto& v = ctx.param<std::vector<double>>("IO", name);
   return {v[0], v[1], v[2]};
+}
+
+// Could this run write a checkpoint? Then its folder must be usable before any output is written.
+bool checkpoints_possible(const Context& ctx) {
+  bool wall_end = false;
+  for (const auto& t : ctx.active_thorns())
+    if (t == "MoL") wall_end = ctx.param<double>("MoL", "max_walltime_hours") > 0;
+  return ctx.param<std::int64_t>("IO", "checkpoint_every") > 0 ||
+         ctx.param<double>("IO", "checkpoint_every_walltime_hours") > 0 || ctx.param<bool>("IO", "checkpoint_on_terminate") ||
+         wall_end;
+}
+
+// Rank 0 creates the folder and a probe file in it; every rank throws the same InputError.
+void check_checkpoint_dir(const Context& ctx, const std::string& dir) {
+  std::string why = ctx.rank() == 0 ? writable_folder_problem(dir) : std::string();
+  int len = static_cast<int>(why.size());
+  MPI_Bcast(&len, 1, MPI_INT, 0, ctx.comm());
+  why.resize(static_cast<std::size_t>(len));
+  MPI_Bcast(why.data(), len, MPI_CHAR, 0, ctx.comm());
+  if (!why.empty())
+    throw InputError(ctx.params().origin("IO", "checkpoint_dir"),
+                     "IO::checkpoint_dir: checkpoints cannot be written to '" + dir + "': " + why +
+                         "; set IO::checkpoint_dir to a writable folder (empty: <Flesh::out_dir>/checkpoints)");
 }
 
 void check_parameters(Context& ctx) {
@@ -59,6 +84,7 @@ void check_parameters(Context& ctx) {
   s.checkpoint.dir = dir.empty() ? ctx.out_dir() + "/checkpoints" : dir;
   s.checkpoint.keep = static_cast<int>(ctx.param<std::int64_t>("IO", "checkpoint_keep"));
   s.checkpoint.kill_at_iteration = ctx.param<std::int64_t>("IO", "test_kill_at_checkpoint");
+  if (checkpoints_possible(ctx)) check_checkpoint_dir(ctx, s.checkpoint.dir);
   s.last_checkpoint_wall = MPI_Wtime();
   const std::string& recover = ctx.param<std::string>("IO", "recover");
   if (recover.empty())
@@ -68,7 +94,7 @@ void check_parameters(Context& ctx) {
 bool recover(Context& ctx) {
   State& s = state(ctx);
   std::string used;
-  if (!recover_checkpoint(ctx, ctx.param<std::string>("IO", "recover"), s.checkpoint, &used)) return false;
+  if (!recover_checkpoint(ctx, ctx.param<std::string>("IO", "recover"), s.checkpoint, &used, &s.steps)) return false;
   // Outputs after the recovered iteration came from a run that died later: drop them, so that a
   // restarted run leaves the same files as an uninterrupted one.
   resume_tsv_files(s.series, ctx, ctx.iteration());
@@ -95,13 +121,14 @@ void write_hdf5(Context& ctx) {
 }
 
 void checkpoint_now(Context& ctx, State& s) {
-  write_checkpoint(ctx, s.checkpoint);
+  write_checkpoint(ctx, s.checkpoint, s.steps);
   s.last_checkpoint_iteration = ctx.iteration();
   s.last_checkpoint_wall = MPI_Wtime();
 }
 
 void checkpoint(Context& ctx) {
   State& s = state(ctx);
+  s.steps.observe(ctx.dt());  // this bin runs once after every step
   const auto every = ctx.param<std::int64_t>("IO", "checkpoint_every");
   bool due = every > 0 && ctx.iteration() % every == 0;
   const double hours = ctx.param<double>("IO", "checkpoint_every_walltime_hours");

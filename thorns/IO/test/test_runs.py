@@ -9,6 +9,15 @@
   truncate   the newest checkpoint cut in half: reported, the previous one used
   walltime   a run ended by MoL::max_walltime_hours leaves a final checkpoint that continues exactly
   params     recovering with a changed steerable: never parameter is an error naming it
+  metadata   damaged scalar metadata of the newest checkpoint (iteration sign bit, iteration -5, a
+             bit of the time, time 1e10): rejected by name, the previous one used, every TSV row
+             and grid file of the first run kept, the continuation bit-identical
+  mesh       a damaged mesh/blocks entry: rejected by name, the previous one used
+  renamed    a copy of checkpoint 4 named it18 beside a valid 12: rejected (stored iteration 4),
+             12 used, and with checkpoint_keep = 1 the new 16 is kept (the copy counts for nothing); IO::recover = <an HDF5 file that is no checkpoint>: "not a Remnant checkpoint"
+  ckdir      an IO::checkpoint_dir that cannot be created stops the run before any output changes
+  sparse_error  a quantity computed every 8 steps (WaveToy::wave_error) but written every step:
+             the rows after the recovered iteration are bit-identical to a straight run's
   grid_output  HDF5 volume/slices/lines on 1 and 2 ranks: utils/check_xdmf, h5py consistency
   plots      utils/plot_timeseries and utils/plot_slice make PNG files
 """
@@ -146,6 +155,134 @@ def mode_params(r):
     print("a changed Grid::ncells stops the recovery naming it; MoL::cfl (steerable: recover) may change")
 
 
+def first_run_with_checkpoints(r):
+    """A straight run to 16 and a first run to 12 with checkpoints at 4, 8, 12 and grid output
+    every 4 iterations; returns (straight, first)."""
+    grid = ["IO::hdf5_every=4", "IO::hdf5_variables=[WaveToy::wave.u]", "IO::hdf5_output=[volume]"]
+    straight, _ = r.run("straight", 1, ["MoL::max_iterations=16"] + grid)
+    first, _ = r.run("first", 1, ["MoL::max_iterations=12", "IO::checkpoint_every=4", "IO::checkpoint_keep=5"] + grid)
+    return straight, first, grid
+
+
+def copy_of(r, first, name):
+    import shutil
+    out = os.path.join(r.a.work, name)
+    shutil.rmtree(out, ignore_errors=True)
+    shutil.copytree(first, out)
+    return out
+
+
+def output_lines(d):
+    """Every line of every TSV file and the names of the grid files in folder d."""
+    lines = {n: open(os.path.join(d, n)).read().splitlines() for n in tsv_files(d)}
+    grids = sorted(os.path.basename(p) for p in glob.glob(os.path.join(d, "grid-*.it*")))
+    return lines, grids
+
+
+def recover_rejecting(r, straight, first, grid, name, damage, expect):
+    """Damages checkpoint 12 of a copy of `first`; the continuation to 16 must reject it by name,
+    recover from 8, keep every earlier row and grid file, and end bit-identical to `straight`."""
+    out = copy_of(r, first, name)
+    newest = os.path.join(checkpoint_dir(out), "checkpoint.it0000000012.h5")
+    damage(newest)
+    before_lines, before_grids = output_lines(out)
+    _, p = r.run(name, 1, ["MoL::max_iterations=16", "IO::recover=auto", "IO::checkpoint_every=4",
+                           "IO::checkpoint_keep=5"] + grid)
+    assert p.returncode == 0, p.stdout
+    assert "checkpoint.it0000000012.h5 is unusable" in p.stdout and expect in p.stdout, p.stdout
+    assert "it0000000008.h5 at iteration 8" in p.stdout, p.stdout
+    after_lines, after_grids = output_lines(out)
+    for n, lines in before_lines.items():
+        kept = [l for l in lines if l.startswith("#") or int(l.split("\t")[0]) <= 8]
+        assert after_lines[n][:len(kept)] == kept, "%s lost rows of iterations <= 8" % n
+    assert set(g for g in before_grids if int(g.split(".it")[1][:8]) <= 8) <= set(after_grids), (before_grids, after_grids)
+    assert len(glob.glob(os.path.join(checkpoint_dir(out), "checkpoint.it*.h5"))) <= 5
+    compare_tsv(straight, out, 0.0)
+    msg = [l for l in p.stdout.splitlines() if "unusable" in l][0]
+    print("%s: %s; recovered from 8; outputs kept, continuation bit-identical" % (name, msg.split("unusable: ")[1]))
+
+
+def set_attr(name, value):
+    def damage(path):
+        import h5py
+        with h5py.File(path, "r+") as f:
+            old = f.attrs[name]
+            f.attrs.modify(name, np.array(value(np.asarray(old).reshape(-1)[0]), dtype=np.asarray(old).dtype).reshape(np.shape(old)))
+    return damage
+
+
+def flip_bit(v, bit):
+    a = np.array([v])
+    return (a.view(np.uint64) ^ np.uint64(1 << bit)).view(a.dtype)[0]
+
+
+def mode_metadata(r):
+    straight, first, grid = first_run_with_checkpoints(r)
+    # The sign-flipped iteration comes last: before the fix that run would go on for 2^63 steps.
+    cases = [("iteration_minus5", set_attr("iteration", lambda v: -5)),
+             ("time_bit", set_attr("time", lambda v: flip_bit(v, 52))),
+             ("time_1e10", set_attr("time", lambda v: 1e10)),
+             ("iteration_sign", set_attr("iteration", lambda v: flip_bit(v, 63)))]
+    for name, damage in cases:
+        recover_rejecting(r, straight, first, grid, name, damage, "do not match their checksum")
+
+
+def mode_mesh(r):
+    import h5py
+    straight, first, grid = first_run_with_checkpoints(r)
+
+    def damage(path):
+        with h5py.File(path, "r+") as f:
+            b = f["mesh/blocks"][:]
+            b[1, 1] = 99
+            f["mesh/blocks"][:] = b
+    recover_rejecting(r, straight, first, grid, "mesh", damage, "do not match their checksum")
+
+
+def mode_renamed(r):
+    import shutil
+    straight, first, grid = first_run_with_checkpoints(r)
+    ck = checkpoint_dir(first)
+    shutil.copy(os.path.join(ck, "checkpoint.it0000000004.h5"), os.path.join(ck, "checkpoint.it0000000018.h5"))
+    _, p = r.run("first", 1, ["MoL::max_iterations=16", "IO::recover=auto", "IO::checkpoint_every=4",
+                              "IO::checkpoint_keep=1"] + grid)
+    assert "checkpoint.it0000000018.h5 is unusable: its stored iteration 4 is not the 18 of its file name" in p.stdout, p.stdout
+    assert "it0000000012.h5 at iteration 12" in p.stdout, p.stdout
+    compare_tsv(straight, first, 0.0)
+    # keep = 1: the newest one written (16) survives; the rejected copy counts for nothing.
+    left = sorted(os.listdir(ck))
+    assert left == ["checkpoint.it0000000016.h5", "checkpoint.it0000000018.h5"], left
+    not_a_checkpoint = os.path.join(first, "grid-volume.it00000004.h5")
+    _, p = r.run("other", 1, ["MoL::max_iterations=16", "IO::recover=" + not_a_checkpoint], expect_ok=False)
+    assert p.returncode != 0 and "grid-volume.it00000004.h5 is unusable: it is not a Remnant checkpoint" in p.stdout, p.stdout
+    print("a copy of checkpoint 4 named it18 is rejected (stored iteration 4), 12 used; an output file given to "
+          "IO::recover: not a Remnant checkpoint")
+
+
+def mode_ckdir(r):
+    out, _ = r.run("ckdir", 1, ["MoL::max_iterations=12"])
+    before = output_lines(out)
+    blocker = os.path.join(r.a.work, "a_file")
+    open(blocker, "w").write("x")
+    for bad in (os.path.join(blocker, "checkpoints"), "/proc/remnant_checkpoints"):
+        _, p = r.run("ckdir", 1, ["MoL::max_iterations=4", "IO::checkpoint_every=4", "IO::checkpoint_dir=" + bad],
+                     expect_ok=False)
+        assert p.returncode != 0 and "IO::checkpoint_dir" in p.stdout and bad in p.stdout, p.stdout
+        assert output_lines(out) == before, "outputs changed before the checkpoint folder was found unusable"
+        print("IO::checkpoint_dir=%s: %s" % (bad, [l for l in p.stdout.splitlines() if "checkpoint_dir" in l][0][:160]))
+
+
+def mode_sparse_error(r):
+    wave = ["WaveToy::initial_data=plane_wave", "WaveToy::wave_numbers=[1,1,1]", "WaveToy::error_every=8",
+            "IO::tsv_variables=[WaveToy::wave,WaveToy::wave_error]"]
+    straight, _ = r.run("straight", 1, ["MoL::max_iterations=20"] + wave)
+    out, _ = r.run("restarted", 1, ["MoL::max_iterations=15", "IO::checkpoint_every=12"] + wave)
+    _, p = r.run("restarted", 1, ["MoL::max_iterations=20", "IO::recover=auto"] + wave)
+    assert "it0000000012.h5 at iteration 12" in p.stdout, p.stdout
+    n, _ = compare_tsv(straight, out, 0.0)
+    print("wave_error computed every 8 steps, written every step: %d TSV files bit-identical after recovery at 12" % n)
+
+
 def mode_grid_output(r):
     import h5py
     args = ["MoL::max_iterations=10", "IO::hdf5_every=5", "IO::hdf5_variables=[WaveToy::wave]",
@@ -221,7 +358,8 @@ def main():
         "restart_1to2": lambda r: mode_restart(r, 1, 2), "restart_2to1": lambda r: mode_restart(r, 2, 1),
         "kill": mode_kill, "corrupt": lambda r: damage_and_recover(r, "corrupt"),
         "truncate": lambda r: damage_and_recover(r, "truncate"), "walltime": mode_walltime,
-        "params": mode_params, "grid_output": mode_grid_output, "plots": mode_plots,
+        "params": mode_params, "grid_output": mode_grid_output, "plots": mode_plots, "metadata": mode_metadata,
+        "mesh": mode_mesh, "renamed": mode_renamed, "ckdir": mode_ckdir, "sparse_error": mode_sparse_error,
     }
     remnant_runs.main(
         lambda a: remnant_runs.Runner(a, os.path.join(a.source_dir, "parfiles", "wavetoy_3d.yaml"), BASE), modes)

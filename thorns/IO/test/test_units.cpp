@@ -4,12 +4,14 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 
 #include "block_packing.hpp"
 #include "centre_value.hpp"
 #include "checkpoint_files.hpp"
+#include "checkpoint_header.hpp"
 #include "checksum.hpp"
 #include "curvilinear.hpp"
 #include "fake_grid.hpp"
@@ -134,9 +136,109 @@ TEST(Files, IterationNamesAndOrder) {
   ASSERT_EQ(l.size(), 3u);
   EXPECT_EQ(l[0], checkpoint_path(d.string(), 12));
   EXPECT_EQ(l[2], checkpoint_path(d.string(), 4));
-  prune_checkpoints(d.string(), 2, "");
+  prune_checkpoints(d.string(), 2, 12);
   EXPECT_EQ(list_checkpoints(d.string()).size(), 2u);
   EXPECT_FALSE(std::filesystem::exists(checkpoint_path(d.string(), 16) + ".tmp"));
+}
+
+// A file named after a later iteration than the one just written (one that recovery rejected, e.g.
+// a renamed copy) must not count among the newest: with keep = 1 it would delete every new one.
+TEST(Files, PruneIgnoresCheckpointsBeyondTheCurrentIteration) {
+  const auto d = temp_dir("prune_future");
+  for (int it : {30, 35, 32, 34}) std::ofstream(checkpoint_path(d.string(), it)) << "x";
+  const auto deleted = prune_checkpoints(d.string(), 1, 34);
+  EXPECT_EQ(deleted.size(), 2u);
+  EXPECT_TRUE(std::filesystem::exists(checkpoint_path(d.string(), 34)));
+  EXPECT_TRUE(std::filesystem::exists(checkpoint_path(d.string(), 35)));
+  EXPECT_FALSE(std::filesystem::exists(checkpoint_path(d.string(), 32)));
+}
+
+// A header as a 1D run of two 8-cell blocks writes it at iteration 12 with a constant dt.
+CheckpointHeader good_header() {
+  CheckpointHeader h;
+  h.iteration = 12;
+  h.dt = h.dt_min = h.dt_max = 0.01;
+  for (int i = 0; i < 12; ++i) h.time += h.dt;
+  h.dimension = 1;
+  h.coordinates = "cartesian";
+  h.parameters = "Grid::ncells\tnever\t[16,1,1]\n";
+  h.thorns = "Grid,MoL,IO";
+  h.states = {{"IO", "-1"}};
+  h.blocks = {0, 0, 0, 0, 0, 1, 0, 0};
+  h.cells = {8, 1, 1, 8, 1, 1};
+  h.groups = {CheckpointGroup{"Test::f", "f", "cell", 8, {1, 2}}};
+  return h;
+}
+
+CheckpointExpectations expectations() {
+  return CheckpointExpectations{1, "cartesian", {"IO"}, {CheckpointGroup{"Test::f", "f", "cell", 0, {}}}};
+}
+
+std::string rejection(const CheckpointHeader& h, const std::string& name = "checkpoint.it0000000012.h5") {
+  try {
+    validate_checkpoint_header(h, "/some/dir/" + name, expectations());
+  } catch (const RunError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// The metadata checksum changes with any field: the damage of issue 16 (sign bit of the iteration,
+// one bit of the time) and every other kind of field.
+TEST(CheckpointHeader, ChecksumCoversEveryField) {
+  const auto base = metadata_checksum(good_header());
+  std::vector<std::function<void(CheckpointHeader&)>> damage = {
+      [](auto& h) { h.iteration ^= std::int64_t{1} << 63; },
+      [](auto& h) { h.iteration = -5; },
+      [](auto& h) { h.time = std::ldexp(h.time, -1); },
+      [](auto& h) { h.time = 1e10; },
+      [](auto& h) { h.dt_max *= 2; },
+      [](auto& h) { h.nan_count = 1; },
+      [](auto& h) { h.coordinates = "spherical"; },
+      [](auto& h) { h.parameters[3] ^= 1; },
+      [](auto& h) { h.thorns += "x"; },
+      [](auto& h) { h.git = "x"; },
+      [](auto& h) { h.states[0].second = "0"; },
+      [](auto& h) { h.blocks[5] = 99; },
+      [](auto& h) { h.cells[0] = 4; },
+      [](auto& h) { h.groups[0].width = 9; },
+      [](auto& h) { h.groups[0].sums[1] ^= 4; },
+      [](auto& h) { h.groups[0].components = "g"; },
+  };
+  for (std::size_t i = 0; i < damage.size(); ++i) {
+    CheckpointHeader h = good_header();
+    damage[i](h);
+    EXPECT_NE(metadata_checksum(h), base) << "damage " << i;
+  }
+}
+
+// A header whose checksum matches (written so by a faulty writer, or forged) must still make sense.
+TEST(CheckpointHeader, ValidationRejectsWhatCannotBeThisRunsCheckpoint) {
+  EXPECT_EQ(rejection(good_header()), "");
+  EXPECT_EQ(rejection(good_header(), "my_copy.h5"), "");  // IO::recover = <a file of another name>
+  auto with = [](std::function<void(CheckpointHeader&)> f) {
+    CheckpointHeader h = good_header();
+    f(h);
+    return h;
+  };
+  EXPECT_NE(rejection(with([](auto& h) { h.iteration = -5; }), "copy.h5").find("is negative"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.iteration ^= std::int64_t{1} << 63; })).find("is negative"), std::string::npos);
+  EXPECT_NE(rejection(good_header(), "checkpoint.it0000000035.h5").find("stored iteration 12 is not the 35 of its file name"),
+            std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.time = std::ldexp(h.time, -1); })).find("cannot follow from 12 steps"),
+            std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.time = 1e10; })).find("cannot follow from 12 steps"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.time = NAN; })).find("not finite"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.dt = 0.02; })).find("outside the run's steps"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.dt_min = h.dt_max = 0; })).find("outside the run's steps"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.iteration = 0; }), "x.h5").find("at iteration 0"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.dimension = 2; })).find("this run's is 1D cartesian"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.blocks[5] = -1; })).find("mesh entry 1"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.cells.pop_back(); })).find("mesh tables disagree"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.states.clear(); })).find("persistent state of thorn IO"), std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.groups[0].name = "Test::g"; })).find("no variable group Test::f"),
+            std::string::npos);
+  EXPECT_NE(rejection(with([](auto& h) { h.groups[0].sums.pop_back(); })).find("another number of blocks"), std::string::npos);
 }
 
 TEST(Packing, RoundTripOfInteriorPoints) {
