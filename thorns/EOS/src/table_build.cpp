@@ -71,6 +71,15 @@ void require_finite(const RawTable& raw, const RawField& f) {
     throw TableError(raw.file, f.dataset, std::to_string(bad) + " NaN/Inf values, first at " + at_str(raw, first));
 }
 
+// Flags the (up to 4) (iye, irho) cells that have grid point i's column as a corner.
+void mark_irregular(TableData& t, std::size_t i) {
+  const std::size_t nr = t.lrho.n, nt = t.lT.n, ny = t.ye.n;
+  if (t.irregular_cell.empty()) t.irregular_cell.assign(nr * ny, 0);
+  const std::size_t ir = i % nr, iy = i / (nr * nt);
+  for (std::size_t dy = 0; dy <= std::min<std::size_t>(iy, 1); ++dy)
+    for (std::size_t dr = 0; dr <= std::min<std::size_t>(ir, 1); ++dr) t.irregular_cell[(iy - dy) * nr + (ir - dr)] = 1;
+}
+
 }  // namespace
 
 std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& opts) {
@@ -141,6 +150,7 @@ std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& o
     for (std::size_t i = 0; i < n; ++i) {
       double& c = raw.cs2.v[i];
       if (c < 0 || c > 1) {
+        if (c > 1) mark_irregular(*t, i);
         if (bad++ == 0) first = i;
         lo = std::min(lo, c), hi = std::max(hi, c);
         if (opts.clamp_cs2) c = std::clamp(c, 0.0, 1.0);

@@ -70,19 +70,39 @@ class KastaunSolver {
     return e;
   }
 
-  RootSolution solve(const Settings& s) {
-    RootSolution out;
-    // (iii) mu_+ by Newton on f_a in (0, 1/h_min]; f_a(1/h_min) >= 0 always.
+  // (iii) mu_+ by Newton on f_a in (0, 1/h_min] (f_a(1/h_min) >= 0 always), and the ends of the
+  // bracket (0, mu_+], with a round-off margin above mu_+ (f(mu_+) >= 0 in exact arithmetic).
+  // False when f does not change sign on it.
+  bool bracket(Eval& lo, Eval& hi, RootSolution& out) {
     const double mu_max = 1 / h_min_;
     RootStats aux_stats;
     const double mu_plus = newton_bracketed([&](double mu, double& f, double& df) { aux(mu, f, df); }, 0.0,
                                             mu_max, 1e-14, 60, aux_stats);
     out.aux_iterations = aux_stats.iterations;
-    // (iv) Brent on (0, mu_+], with a round-off margin above mu_+ (f(mu_+) >= 0 in exact arithmetic).
-    Eval hi = (*this)(std::min(mu_max, mu_plus * (1 + 1e-12)));
+    hi = (*this)(std::min(mu_max, mu_plus * (1 + 1e-12)));
     if (hi.f < 0 && hi.x < mu_max) hi = (*this)(mu_max);
-    const Eval lo = (*this)(0.0);
-    if (!(hi.f >= 0 && lo.f <= 0)) {
+    lo = (*this)(0.0);
+    return hi.f >= 0 && lo.f <= 0;
+  }
+
+  // The solution at a root (with the far end of its final bracket, for the secant polish).
+  RootSolution solution(Eval root, const Eval& far, const RootStats& st, const Settings& s, RootSolution out) {
+    if (s.secant_polish) root = secant_polish(root, far);
+    out.iterations = st.iterations;
+    out.converged = st.converged;
+    out.evaluations = thermo_.evaluations();
+    // (v) velocity from the root, v^i = mu chi (r^i + mu (r.Bc) Bc^i), at the speed of its W.
+    const double mu = root.x, chi = 1 / (1 + mu * Bc2_);
+    for (int i = 0; i < 3; ++i) out.v[i] = mu * chi * (r_up_[i] + mu * rB_ * Bc_[i]);
+    copy_root_state(root, out);
+    return out;
+  }
+
+  RootSolution solve(const Settings& s) {
+    RootSolution out;
+    Eval lo, hi;
+    // (iv) Brent on the bracket.
+    if (!bracket(lo, hi, out)) {
       out.bracketed = out.converged = false;
       out.evaluations = thermo_.evaluations();
       return out;
@@ -100,15 +120,7 @@ class KastaunSolver {
         st.iterations += st2.iterations;
       }
     }
-    if (s.secant_polish) root = secant_polish(root, far);
-    out.iterations = st.iterations;
-    out.converged = st.converged;
-    out.evaluations = thermo_.evaluations();
-    // (v) velocity from the root, v^i = mu chi (r^i + mu (r.Bc) Bc^i), at the speed of its W.
-    const double mu = root.x, chi = 1 / (1 + mu * Bc2_);
-    for (int i = 0; i < 3; ++i) out.v[i] = mu * chi * (r_up_[i] + mu * rB_ * Bc_[i]);
-    copy_root_state(root, out);
-    return out;
+    return solution(root, far, st, s, out);
   }
 
   // eps_hat_0(mu) below eps_low(rho_hat(mu), Ye), i.e. rule 8 clamps there (one EOS inversion).

@@ -39,6 +39,11 @@ struct TableData {
   std::vector<double> compo;
   // Per (iye, irho) cell: 1 if eps rises with T along all four corner columns.
   std::vector<std::uint8_t> monotone_cell;
+  // Per (iye, irho) cell, like monotone_cell: 1 if at any T a corner's cs2 exceeded 1 before the
+  // clamp (acausal: the conserved variables may not determine the state uniquely; the other states
+  // that share them lie at other T). Empty when none. (cs2 < 0, as in LS220's blend region near
+  // 1e11 g/cm^3, is tiny there and not flagged: it would put a root scan in every cell of a shell.)
+  std::vector<std::uint8_t> irregular_cell;
   Bounds bounds;
   CheckReport report;
 
