@@ -77,6 +77,12 @@ struct RawTable {
 struct BuildOptions {
   bool clamp_cs2 = true;        // clamp cs2 into [0, 1] after counting the violations
   double axis_tolerance = 1e-6;  // allowed deviation from a uniform axis, in units of the spacing
+  // Largest fraction of grid points that may fail the thermodynamic checks (cs2 outside [0, 1],
+  // p not increasing with rho, eps not increasing with T) before loading stops with an error.
+  double max_inconsistent_fraction = 0.1;
+  // p may fall with rho (phase transitions, blend regions), but a fall by more than this factor
+  // between neighbouring rho points is a corrupted value: an error.
+  double max_pressure_drop = 10;
 };
 
 // Checks a raw table (throws TableError for errors, records warnings) and builds the internal
