@@ -46,22 +46,32 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   MPI_Allreduce(maxima, mg, 3, MPI_DOUBLE, MPI_MAX, comm);
   // The grid's reduction sums block by block along the curve: the same bits on any rank count.
   const double mass_g = ctx.grid().reduce(cons, 0, ReductionKind::volume_integral);
+  // GRMHD's mass budget: time-integrated boundary outflow and the D added by atmosphere/policy.
+  const int budget = ctx.var("GRMHD::mass_budget");
+  const double outflow = ctx.grid().reduce(budget, 0, ReductionKind::volume_integral);
+  const double source = ctx.grid().reduce(budget, 1, ReductionKind::volume_integral);
   StarDiagnostics d;
   d.iteration = ctx.iteration();
   d.time = ctx.time();
   d.rho_c = cg[0], d.alpha_c = cg[1], d.psi_c = cg[2];
   d.rho_max = mg[0], d.alpha_min = -mg[1], d.psi_max = mg[2];
   d.rest_mass = mass_g;
+  d.outflow = outflow;
+  d.atmosphere_source = source;
+  d.mass_budget = mass_g + outflow - source;
   return d;
 }
 
-const char* tsv_header() { return "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\n"; }
+const char* tsv_header() {
+  return "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
+         "atmosphere_source\tmass_budget\n";
+}
 
 std::string tsv_line(const StarDiagnostics& d) {
-  char b[512];
-  std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
+  char b[768];
+  std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
                 static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
-                d.psi_max, d.rest_mass);
+                d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
   return b;
 }
 

@@ -61,6 +61,7 @@ template <class E>
 void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm, const Groups& g,
                   Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell) {
   const CellAccess acc(g, b);
+  const Field source = b.field(g.budget, 1);
   for_cells(b, acc, [&](std::ptrdiff_t o, double psi4, double psi6, const std::array<double, 3>& fd) {
     const double ipsi6 = 1.0 / psi6;
     con2prim::Conserved c;
@@ -82,7 +83,10 @@ void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::A
       fatal_cell = m;
     }
     acc.store_prim(o, p);
+    const double D_before = acc.cons[0].origin[o];
     acc.store_cons(o, c, psi6);
+    // What the atmosphere and the policy added to D (mass budget, see mass_budget.hpp).
+    source.origin[o] += acc.cons[0].origin[o] - D_before;
   });
 }
 

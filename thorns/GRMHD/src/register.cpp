@@ -1,6 +1,7 @@
 // GRMHD (hydrodynamics): binds the scheduled functions of thorn.yaml.
 #include <mpi.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "Atmosphere/atmosphere.hpp"
@@ -9,6 +10,7 @@
 #include "GRMHD/con2prim_sweep.hpp"
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
+#include "mass_budget.hpp"
 #include "rhs.hpp"
 #include "shock_tube.hpp"
 #include "time_step.hpp"
@@ -71,8 +73,10 @@ void initial_cons(Context& ctx) {
   const auto& atm = ctx.service<atmosphere::Atmosphere>("atmosphere");
   const Groups g = Groups::of(ctx);
   con2prim::Diagnostics diag;
-  for (Block* b : ctx.grid().local_blocks())
+  for (Block* b : ctx.grid().local_blocks()) {
     prim_to_cons_block(eos, settings, atm, g, *b, diag);
+    std::fill_n(b->data(g.budget), b->size(g.budget), 0.0);  // the budget starts with the evolution
+  }
   report(ctx, diag, "GRMHD_InitialCons");
 }
 
@@ -85,7 +89,11 @@ void calc_rhs(Context& ctx) {
   std::vector<int> faces;
   for (int d = 0; d < ctx.grid().dimension(); ++d) faces.push_back(g.flux[d]);
   ctx.grid().correct_fluxes(faces);
-  for (Block* b : ctx.grid().local_blocks()) compute_block_rhs(g, *b);
+  const DomainCells dom = DomainCells::of(ctx);
+  for (Block* b : ctx.grid().local_blocks()) {
+    compute_block_rhs(g, *b);
+    outflow_rhs_block(g, dom, *b);
+  }
 }
 
 void con2prim(Context& ctx) {

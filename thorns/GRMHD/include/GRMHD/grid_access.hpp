@@ -16,6 +16,7 @@ inline constexpr int kNumMetric = 5;
 struct Groups {
   int cons = -1, cons_rhs = -1, prim = -1, metric = -1;
   std::array<int, 3> flux{-1, -1, -1};
+  int budget = -1, budget_rhs = -1;  // GRMHD::mass_budget (outflow, source) and its rhs
   static Groups of(const Context& ctx) {
     Groups g;
     g.cons = ctx.var("GRMHD::cons");
@@ -23,6 +24,8 @@ struct Groups {
     g.prim = ctx.var("GRMHD::prim");
     g.metric = ctx.var("Spacetime::metric");
     g.flux = {ctx.var("GRMHD::flux_x"), ctx.var("GRMHD::flux_y"), ctx.var("GRMHD::flux_z")};
+    g.budget = ctx.var("GRMHD::mass_budget");
+    g.budget_rhs = ctx.var("GRMHD::mass_budget_rhs");
     return g;
   }
 };
