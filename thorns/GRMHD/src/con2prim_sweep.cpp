@@ -61,7 +61,8 @@ template <class E>
 void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm, const Groups& g,
                   Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell) {
   const CellAccess acc(g, b);
-  const Field source = b.field(g.budget, 1);
+  // The mass budget's source component, where the caller has the group (a stand-alone block may not).
+  double* const source = g.budget >= 0 ? b.field(g.budget, 1).origin : nullptr;
   for_cells(b, acc, [&](std::ptrdiff_t o, double psi4, double psi6, const std::array<double, 3>& fd) {
     const double ipsi6 = 1.0 / psi6;
     con2prim::Conserved c;
@@ -86,7 +87,7 @@ void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::A
     const double D_before = acc.cons[0].origin[o];
     acc.store_cons(o, c, psi6);
     // What the atmosphere and the policy added to D (mass budget, see mass_budget.hpp).
-    source.origin[o] += acc.cons[0].origin[o] - D_before;
+    if (source) source[o] += acc.cons[0].origin[o] - D_before;
   });
 }
 
