@@ -22,7 +22,7 @@ using namespace remnant;
 
 // A shock tube whose dense gas streams out through the left boundary (v = -0.3) and expands into an
 // atmosphere on the right, whose cells the con2prim sweeps keep resetting.
-std::vector<analysis::StarDiagnostics> run(const std::string& coords, int dim) {
+std::vector<analysis::StarDiagnostics> run(const std::string& coords, int dim, const std::string& refinement = "") {
   static const ThornCatalog catalog(remnant_compiled_thorns());
   const auto dir = std::filesystem::temp_directory_path() / ("remnant_budget_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
@@ -30,7 +30,8 @@ std::vector<analysis::StarDiagnostics> run(const std::string& coords, int dim) {
   std::ofstream(par) << "active_thorns: [Grid, MoL, Spacetime, EOS, Atmosphere, Con2Prim, GRMHD, Analysis]\n"
                         "Grid: {coordinates: " << coords << ", dimension: " << dim << ", ncells: [64, 16, 1], "
                         "block_size: [16, 16, 1], xmin: [1, 0.5, 0], xmax: [2, 1.5, 1], ghost_zones: 3, "
-                        "boundary_lower: [outflow, outflow, outflow], boundary_upper: [outflow, outflow, outflow]}\n"
+                        "boundary_lower: [outflow, outflow, outflow], boundary_upper: [outflow, outflow, outflow]"
+                     << refinement << "}\n"
                         "MoL: {method: rk3, cfl: 0.4, max_iterations: 60}\n"
                         "EOS: {type: ideal_gas, gamma: 1.6666666666666667, rho_max: 1.0e3, T_max: 1.0e7}\n"
                         "Atmosphere: {rho_thr: 1.0e-6}\n"
@@ -70,3 +71,11 @@ void expect_budget_constant(const std::vector<analysis::StarDiagnostics>& rows, 
 TEST(MassBudget, CartesianShockTubeKeepsTheBudgetToRoundOff) { expect_budget_constant(run("cartesian", 1), "cartesian 1D"); }
 
 TEST(MassBudget, Cylindrical2DKeepsTheBudgetToRoundOff) { expect_budget_constant(run("cylindrical", 2), "cylindrical 2D"); }
+
+// A refined level on the boundary where the mass leaves (and on the lower and upper z faces): the
+// boundary faces of level-1 blocks count, the coarse-fine faces (refluxed) cancel.
+TEST(MassBudget, RefinedBoundaryKeepsTheBudgetToRoundOff) {
+  expect_budget_constant(run("cylindrical", 2, ", max_level: 1, regions: [box], region_levels: [1], "
+                                               "region_bounds: [0.9, 1.3, 0.4, 1.6, -1, 2]"),
+                         "cylindrical 2D, level 1 at the left boundary");
+}
