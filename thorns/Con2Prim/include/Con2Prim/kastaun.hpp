@@ -36,6 +36,10 @@ class KastaunSolver {
     rperp2_Bc2_ = std::max(0.0, r2_ * Bc2_ - rB_ * rB_);  // r_perp^2 Bc^2
     h_min_ = thermo_.bounds().h_min;
     v0sq_ = r2_ / (h_min_ * h_min_ + r2_);
+    // 1 - v0^2, exactly h_min^2 / (h_min^2 + r^2) where the subtraction would round to 0 (r above
+    // ~1e8 h_min, e.g. W = 1e6 with a hot gas): W stays finite at the cap.
+    one_minus_v0sq_ = 1 - v0sq_;
+    if (!(one_minus_v0sq_ > 0)) one_minus_v0sq_ = h_min_ * h_min_ / (h_min_ * h_min_ + r2_);
   }
 
   // r_bar^2(mu) = r^2 chi^2 + mu chi (1 + chi) (r.Bc)^2.
@@ -58,7 +62,7 @@ class KastaunSolver {
     const double rb2 = rbar2(mu, chi);
     const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
     const double v2 = std::min(mu * mu * rb2, v0sq_);
-    const double W = 1 / std::sqrt(1 - v2);
+    const double W = 1 / std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);
     const double rho0 = D_ / W;
     const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
     // eps clamped to [eps_low(rho, Ye), eps_high(rho, Ye)] and T from eps, guessed from the last call.
@@ -129,7 +133,7 @@ class KastaunSolver {
     const double rb2 = rbar2(mu, chi);
     const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
     const double v2 = std::min(mu * mu * rb2, v0sq_);
-    const double W = 1 / std::sqrt(1 - v2);
+    const double W = 1 / std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);
     const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
     return (thermo_.inversion_flags(D_ / W, eps0) & eos::kInvBelowEpsLow) != 0;
   }
@@ -156,7 +160,7 @@ class KastaunSolver {
  private:
   MasterEos<E> thermo_;
   double D_;
-  double q_ = 0, r2_ = 0, Bc2_ = 0, rB_ = 0, rperp2_Bc2_ = 0, h_min_ = 1, v0sq_ = 0;
+  double q_ = 0, r2_ = 0, Bc2_ = 0, rB_ = 0, rperp2_Bc2_ = 0, h_min_ = 1, v0sq_ = 0, one_minus_v0sq_ = 1;
   Vec3 r_low_{}, r_up_{}, Bc_{};
 };
 
