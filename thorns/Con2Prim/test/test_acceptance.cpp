@@ -133,3 +133,23 @@ TEST(Acceptance, RandomStatesOverSFHoAreNeverSilentlyWrong) {
     EXPECT_EQ(t.flagged + t.other, 0) << to_string(m);
   }
 }
+
+// W = 1e6 in the hot, dilute corner of the table (r = |S|/D ~ 1e8): 1 - v0^2 used to round to 0,
+// the master function gave W = inf and the recovery NaN (an atmosphere cell, Status::non_finite).
+TEST(Acceptance, UltraRelativisticHotGasGivesFiniteW) {
+  const std::string path = c2p_test::shared_eos("SFHo_reduced_39r_39t_20y.h5");
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "EOS table not found: " << path;
+  const eos::Tabulated<> e(eos::load_table(path));
+  Settings s;
+  s.policy.W_max = 1e300;
+  Tally t;
+  Diagnostics d;
+  for (double T : {1.0, 10.0, 30.0}) {
+    const Primitives p = make_state(e, Metric3::flat(), 2e4 * remnant::units::rho_cgs_to_code, T, 0.1, 1e6, 1e-3,
+                                    {0.6, 0.8, 0}, {-0.6, -0.8, 0});
+    const Report r = check(e, s, p, t, d);
+    EXPECT_NE(r.status, Status::non_finite) << "T = " << T;
+  }
+  EXPECT_EQ(d.count(Status::non_finite), 0u);
+  EXPECT_EQ(t.ok_wrong, 0);
+}
