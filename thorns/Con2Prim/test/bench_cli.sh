@@ -46,7 +46,7 @@ start=$(date +%s.%N)
 out=$("$exe" "$table" --fuzz=100000 --no-timing --out="$tmp/fuzz" 2>&1)
 rc=$?
 echo "$out" | grep -E "^(plane|fuzz)"
-echo "fuzz took $(echo "$(date +%s.%N) - $start" | bc) s"
+echo "fuzz took $(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN{printf "%.2f", b - a}') s"
 if [ "$rc" != 0 ]; then echo "FAIL fuzz: exit $rc"; echo "$out" | tail -5; failed=$((failed + 1)); fi
 # Columns of summary.tsv: silently_wrong (12), nan (14); one row per method.
 rows=$(awk -F'\t' '$1 == "fuzz" && $3 == 100000 && $12 == 0 && $14 == 0' "$tmp/fuzz/summary.tsv" | wc -l)
