@@ -101,12 +101,12 @@ void check_pressure_monotonic(const RawTable& raw, const BuildOptions& opts, std
 }
 
 // Flags the (up to 4) (iye, irho) cells that have grid point i's column as a corner.
-void mark_irregular(TableData& t, std::size_t i) {
+void mark_acausal(TableData& t, std::size_t i) {
   const std::size_t nr = t.lrho.n, nt = t.lT.n, ny = t.ye.n;
-  if (t.irregular_cell.empty()) t.irregular_cell.assign(nr * ny, 0);
+  if (t.acausal_cell.empty()) t.acausal_cell.assign(nr * ny, 0);
   const std::size_t ir = i % nr, iy = i / (nr * nt);
   for (std::size_t dy = 0; dy <= std::min<std::size_t>(iy, 1); ++dy)
-    for (std::size_t dr = 0; dr <= std::min<std::size_t>(ir, 1); ++dr) t.irregular_cell[(iy - dy) * nr + (ir - dr)] = 1;
+    for (std::size_t dr = 0; dr <= std::min<std::size_t>(ir, 1); ++dr) t.acausal_cell[(iy - dy) * nr + (ir - dr)] = 1;
 }
 
 }  // namespace
@@ -200,7 +200,7 @@ std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& o
       double& c = raw.cs2.v[i];
       if (c < 0 || c > 1) {
         inconsistent[i] = 1;
-        if (c > 1) mark_irregular(*t, i);
+        if (c > 1) mark_acausal(*t, i);
         if (bad++ == 0) first = i;
         lo = std::min(lo, c), hi = std::max(hi, c);
         if (opts.clamp_cs2) c = std::clamp(c, 0.0, 1.0);

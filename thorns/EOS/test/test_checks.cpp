@@ -82,6 +82,12 @@ TEST(EOSChecks, Cs2OutsideUnitIntervalIsCountedAndClamped) {
   Tabulated<> eos(t);
   EXPECT_GE(eos.cs2(raw.rho[0], raw.T[0], raw.ye[0]), 0.0);
   EXPECT_LE(eos.cs2(raw.rho[1], raw.T[0], raw.ye[0]), 1.0);
+  // cs2 > 1 marks the (rho, Ye) cells around those points as acausal (con2prim scans roots there);
+  // cs2 < 0 alone does not.
+  EXPECT_TRUE(eos.acausal(std::sqrt(raw.rho[1] * raw.rho[2]), raw.ye[0]));
+  EXPECT_TRUE(eos.acausal(std::sqrt(raw.rho[0] * raw.rho[1]), raw.ye[0]));
+  EXPECT_FALSE(eos.acausal(std::sqrt(raw.rho[5] * raw.rho[6]), raw.ye[0]));
+  EXPECT_FALSE(eos.acausal(raw.rho[1], raw.ye[3]));
 }
 
 TEST(EOSChecks, NonMonotonicEpsIsCountedAndInversionFollowsTheGuess) {

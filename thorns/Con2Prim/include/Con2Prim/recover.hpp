@@ -44,8 +44,8 @@ inline constexpr std::uint32_t kRulesMovingState =
     kRuleEpsBelowMin | kRuleTBelowMin | kRuleEpsBelowLow | kRuleEpsAboveHigh | kRuleWAboveMax | kFatalRules;
 
 template <class E>
-bool irregular_at(const E& eos, const Primitives& p) {
-  if constexpr (requires { eos.irregular(p.rho, p.ye); }) return eos.irregular(p.rho, p.ye);
+bool acausal_at(const E& eos, const Primitives& p) {
+  if constexpr (requires { eos.acausal(p.rho, p.ye); }) return eos.acausal(p.rho, p.ye);
   return false;
 }
 
@@ -146,15 +146,15 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   if (!sol.converged) rep.status = Status::not_converged;
 
   // (v)-(vi), and the acceptance test: the result must reproduce the conserved variables. Where it
-  // does not (and the policy did not move it on purpose), or where the table is irregular and the
+  // does not (and the policy did not move it on purpose), or where the table is acausal and the
   // root may not be the only one, every root of the master function is tried.
   detail::Candidate best = detail::complete(eos, s, atm, g, input, sol, prim, ye_rules);
   // A clamp by rules 8/9 does not excuse a residual here: raising eps to eps_low can create a root
   // beside the physical one (LS220 above ~5e15 g/cm^3), so a clean root is looked for first.
   const bool wrong = best.finite && !best.atmosphere && best.residual > s.accuracy &&
                      (!(best.rules & detail::kRulesMovingState & ~(kRuleEpsBelowLow | kRuleEpsAboveHigh)) ||
-                      detail::irregular_at(eos, best.prim));
-  if (rep.status == Status::ok && (wrong || (best.clean() && detail::irregular_at(eos, best.prim)))) {
+                      detail::acausal_at(eos, best.prim));
+  if (rep.status == Status::ok && (wrong || (best.clean() && detail::acausal_at(eos, best.prim)))) {
     RootSolution roots[kMaxScanRoots];
     const int n = s.method == Method::palenzuela ? detail::scan<PalenzuelaSolver<E>>(eos, s, g, cons, prim.ye, roots)
                                                  : detail::scan<KastaunSolver<E>>(eos, s, g, cons, prim.ye, roots);
@@ -177,7 +177,7 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   if (best.atmosphere) return to_atmosphere(Status::atmosphere);
   if (!best.finite) return to_atmosphere(Status::non_finite);
   if (rep.status == Status::ok && best.residual > s.accuracy &&
-      (!(best.rules & detail::kRulesMovingState) || detail::irregular_at(eos, best.prim)))
+      (!(best.rules & detail::kRulesMovingState) || detail::acausal_at(eos, best.prim)))
     rep.status = Status::inaccurate;
   return finish();
 }

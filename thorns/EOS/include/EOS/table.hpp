@@ -43,7 +43,7 @@ struct TableData {
   // clamp (acausal: the conserved variables may not determine the state uniquely; the other states
   // that share them lie at other T). Empty when none. (cs2 < 0, as in LS220's blend region near
   // 1e11 g/cm^3, is tiny there and not flagged: it would put a root scan in every cell of a shell.)
-  std::vector<std::uint8_t> irregular_cell;
+  std::vector<std::uint8_t> acausal_cell;
   Bounds bounds;
   CheckReport report;
 
