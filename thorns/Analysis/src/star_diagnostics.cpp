@@ -55,22 +55,34 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   const int cons = Cons::id(ctx);
   ctx.check_access(cons);
   const double mass_g = ctx.grid().reduce(cons, Cons::idx::D, ReductionKind::volume_integral);
+  // HydroBase's mass budget: time-integrated boundary outflow and the D added by atmosphere/policy.
+  using Budget = vars::HydroBase::mass_budget;
+  const int budget = Budget::id(ctx);
+  ctx.check_access(budget);
+  const double outflow = ctx.grid().reduce(budget, Budget::idx::outflow, ReductionKind::volume_integral);
+  const double source = ctx.grid().reduce(budget, Budget::idx::source, ReductionKind::volume_integral);
   StarDiagnostics d;
   d.iteration = ctx.iteration();
   d.time = ctx.time();
   d.rho_c = cg[0], d.alpha_c = cg[1], d.psi_c = cg[2];
   d.rho_max = mg[0], d.alpha_min = -mg[1], d.psi_max = mg[2];
   d.rest_mass = mass_g;
+  d.outflow = outflow;
+  d.atmosphere_source = source;
+  d.mass_budget = mass_g + outflow - source;
   return d;
 }
 
-const char* tsv_header() { return "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\n"; }
+const char* tsv_header() {
+  return "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
+         "atmosphere_source\tmass_budget\n";
+}
 
 std::string tsv_line(const StarDiagnostics& d) {
-  char b[512];
-  std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
+  char b[768];
+  std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
                 static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
-                d.psi_max, d.rest_mass);
+                d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
   return b;
 }
 

@@ -23,6 +23,7 @@ c2p::Settings settings_from(const Context& ctx) {
   s.max_iterations = int(ctx.param<std::int64_t>("Con2Prim", "max_iterations"));
   s.eps_to_T = word("eps_to_T") == "brent" ? remnant::eos::InversionMethod::brent : remnant::eos::InversionMethod::exact;
   s.secant_polish = ctx.param<bool>("Con2Prim", "secant_polish");
+  s.accuracy = real("accuracy");
   s.policy.W_max = real("W_max");
   s.policy.rho_W_limit = real("W_max_rho_limit") * remnant::units::rho_cgs_to_code;
   return s;

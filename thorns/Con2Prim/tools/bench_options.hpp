@@ -1,9 +1,11 @@
 #pragma once
 // Command-line options of remnant-c2p-bench.
+#include <cstddef>
 #include <string>
 #include <vector>
 
 #include "Con2Prim/settings.hpp"
+#include "EOS/types.hpp"
 
 namespace c2p_bench {
 
@@ -31,9 +33,14 @@ struct Options {
   double rho_thr = 1e-300;               // atmosphere threshold (none inside the table by default)
   double min_time = 0.5;                 // seconds per timing
   bool time_it = true;
+  std::size_t fuzz = 0;                  // > 0: N random states over the whole table instead of the planes
 };
 
 // Parses argv; on --help or an error prints usage and returns false (`ok` says which).
 bool parse_options(int argc, char** argv, Options& o, bool& ok);
+
+// The options that must lie inside the table (Ye; rho and T of the W-b plane; --rho-max): throws
+// std::runtime_error naming the option, its value and the table's range.
+void check_against_table(const Options& o, const remnant::eos::Bounds& b);
 
 }  // namespace c2p_bench

@@ -9,6 +9,7 @@
 
 #include "Con2Prim/prim_to_cons.hpp"
 #include "Con2Prim/recover.hpp"
+#include "Con2Prim/residual.hpp"
 #include "Con2Prim/state_builder.hpp"
 #include "EOS/units.hpp"
 
@@ -88,6 +89,31 @@ Plane W_b_plane(const eos::Tabulated<>& e, const Options& o) {
   return p;
 }
 
+Plane fuzz_states(const eos::Tabulated<>& e, const Options& o) {
+  const eos::Bounds& b = e.bounds();
+  Plane p{"fuzz", "log10_rho_cgs", "log10_T_MeV", {}};
+  std::mt19937_64 rng(o.seed);
+  auto uni = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+  Directions dir{std::mt19937_64(o.seed + 1), true};
+  const Metric3 g = Metric3::flat();
+  const double to_cgs = -std::log10(remnant::units::rho_cgs_to_code);
+  p.points.reserve(o.fuzz);
+  for (std::size_t k = 0; k < o.fuzz; ++k) {
+    const double lr = uni(std::log10(b.rho_min), std::log10(b.rho_max));
+    const double lt = uni(std::log10(b.T_min), std::log10(b.T_max));
+    const double ye = uni(b.ye_min, b.ye_max);
+    const double W = std::pow(10.0, uni(0.0, 4.0)), b2p = std::pow(10.0, uni(-10.0, 10.0));
+    Vec3 v, B;
+    dir.next(v, B);
+    PlanePoint pt;
+    pt.x = lr + to_cgs;
+    pt.y = lt;
+    pt.orig = make_state(e, g, std::pow(10.0, lr), std::pow(10.0, lt), ye, W, b2p, v, B);
+    p.points.push_back(pt);
+  }
+  return p;
+}
+
 double eps_recov(const Primitives& got, const Primitives& orig) {
   return (rel(got.rho, orig.rho) + vec_rel(got.v, orig.v) + rel(got.eps, orig.eps) + vec_rel(got.B, orig.B) +
           rel(got.ye, orig.ye)) /
@@ -109,6 +135,11 @@ std::vector<PointResult> run_counted(const eos::Tabulated<eos::CountCalls>& e, c
     r.evaluations = rep.evaluations;
     r.eos_calls = rep.eos_calls;
     r.status = rep.status;
+    r.rules = rep.rules;
+    r.root_scan = rep.root_scan;
+    r.residual = conserved_residual(prim_to_cons(got, g), prim_to_cons(pt.orig, g), g);
+    r.nan = !(std::isfinite(got.rho) && std::isfinite(got.eps) && std::isfinite(got.W) && std::isfinite(got.press) &&
+              std::isfinite(got.T) && std::isfinite(got.v[0]) && std::isfinite(got.v[1]) && std::isfinite(got.v[2]));
     out.push_back(r);
   }
   return out;
@@ -139,13 +170,17 @@ double time_ns_per_recovery(const eos::Tabulated<>& e, const Settings& s, const 
   return elapsed * 1e9 / double(done);
 }
 
-Summary summarise(const std::vector<PointResult>& r) {
+Summary summarise(const std::vector<PointResult>& r, double accuracy) {
   Summary s;
   s.points = r.size();
   double se = 0, si = 0, sv = 0, sc = 0;
   for (const PointResult& p : r) {
-    if (p.status != Status::ok) ++s.failures;
-    else if (p.eps_recov > 1e-8) ++s.inaccurate;
+    s.nan += p.nan;
+    if (p.status == Status::inaccurate || p.status == Status::ambiguous) ++s.flagged;
+    else if (p.status != Status::ok) ++s.failures;
+    else if (p.residual > accuracy && (p.rules & detail::kRulesMovingState)) ++s.policy;
+    else if (p.residual > accuracy) ++s.silently_wrong;
+    else if (p.eps_recov > 1e-8) ++s.imprecise;
     se += p.eps_recov;
     s.max_eps_recov = std::max(s.max_eps_recov, p.eps_recov);
     si += p.iterations;
@@ -164,11 +199,12 @@ Summary summarise(const std::vector<PointResult>& r) {
 void write_tsv(const std::string& path, const Plane& plane, const std::vector<PointResult>& r) {
   FILE* f = std::fopen(path.c_str(), "w");
   if (!f) throw std::runtime_error("cannot write " + path);
-  std::fprintf(f, "%s\t%s\teps_recov\titerations\tevaluations\teos_calls\tstatus\n", plane.x_name.c_str(),
-               plane.y_name.c_str());
+  std::fprintf(f, "%s\t%s\teps_recov\titerations\tevaluations\teos_calls\tstatus\tresidual\trules\troot_scan\n",
+               plane.x_name.c_str(), plane.y_name.c_str());
   for (std::size_t k = 0; k < r.size(); ++k)
-    std::fprintf(f, "%.6f\t%.6f\t%.6e\t%d\t%d\t%llu\t%s\n", plane.points[k].x, plane.points[k].y, r[k].eps_recov,
-                 r[k].iterations, r[k].evaluations, (unsigned long long)r[k].eos_calls, to_string(r[k].status));
+    std::fprintf(f, "%.6f\t%.6f\t%.6e\t%d\t%d\t%llu\t%s\t%.3e\t0x%x\t%d\n", plane.points[k].x, plane.points[k].y,
+                 r[k].eps_recov, r[k].iterations, r[k].evaluations, (unsigned long long)r[k].eos_calls,
+                 to_string(r[k].status), r[k].residual, r[k].rules, int(r[k].root_scan));
   std::fclose(f);
 }
 

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "Atmosphere/atmosphere.hpp"
 #include "EOS/readers.hpp"
@@ -45,6 +46,12 @@ int main(int argc, char** argv) {
   if (!parse_options(argc, argv, o, ok)) return ok ? 0 : (argc > 1 && std::string(argv[1]) == "--help" ? 0 : 2);
   try {
     const auto table = eos::load_table(o.table);
+    try {
+      check_against_table(o, table->bounds);
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "remnant-c2p-bench: %s\n", e.what());
+      return 2;
+    }
     const eos::Tabulated<> plain(table);
     const eos::Tabulated<eos::CountCalls> counted(table);
     remnant::atmosphere::Atmosphere atm;
@@ -58,34 +65,52 @@ int main(int argc, char** argv) {
     if (!sum) throw std::runtime_error("cannot write " + summary_path);
     std::fputs(header.c_str(), sum);
     std::fprintf(sum, "plane\tmethod\tpoints\tmean_eps_recov\tmax_eps_recov\tmean_iterations\tmax_iterations\t"
-                      "mean_evaluations\tmean_eos_calls\tfailures\tinaccurate\tns_per_recovery\n");
-    std::printf("%-5s %-10s %7s %12s %12s %9s %8s %9s %10s %8s %10s %10s\n", "plane", "method", "points", "eps_recov",
-                "max", "iter", "max_iter", "evals", "eos_calls", "failures", "inaccurate", "ns/recov");
+                      "mean_evaluations\tmean_eos_calls\tfailures\tflagged\tsilently_wrong\tpolicy\tnan\timprecise\t"
+                      "ns_per_recovery\n");
+    std::printf("%-5s %-10s %7s %10s %10s %7s %4s %7s %9s %8s %7s %6s %6s %4s %9s %9s\n", "plane", "method",
+                "points", "eps_recov", "max", "iter", "max", "evals", "eos_calls", "failures", "flagged", "silent",
+                "policy", "nan", "imprecise", "ns/recov");
 
-    for (int which = 0; which < 2; ++which) {
-      if ((which == 0 && !o.plane_rho_T) || (which == 1 && !o.plane_W_b)) continue;
-      const Plane plane = which == 0 ? rho_T_plane(plain, o) : W_b_plane(plain, o);
+    std::vector<Plane> planes;
+    if (o.fuzz > 0) {
+      planes.push_back(fuzz_states(plain, o));
+    } else {
+      if (o.plane_rho_T) planes.push_back(rho_T_plane(plain, o));
+      if (o.plane_W_b) planes.push_back(W_b_plane(plain, o));
+    }
+    std::size_t bad = 0;
+    for (const Plane& plane : planes) {
       for (c2p::Method m : o.methods) {
         c2p::Settings s = o.settings;
         s.method = m;
         const auto results = run_counted(counted, s, atm, plane);
-        Summary su = summarise(results);
+        Summary su = summarise(results, s.accuracy);
+        bad += su.silently_wrong + su.nan;
         if (o.time_it) su.ns_per_recovery = time_ns_per_recovery(plain, s, atm, plane, o.min_time);
         write_tsv(o.out_dir + "/" + plane.name + "_" + c2p::to_string(m) + ".tsv", plane, results);
-        std::printf("%-5s %-10s %7zu %12.4e %12.4e %9.3f %8d %9.3f %10.2f %8zu %10zu %10.1f\n", plane.name.c_str(),
-                    c2p::to_string(m), su.points, su.mean_eps_recov, su.max_eps_recov, su.mean_iterations,
-                    su.max_iterations, su.mean_evaluations, su.mean_eos_calls, su.failures, su.inaccurate,
-                    su.ns_per_recovery);
-        std::fprintf(sum, "%s\t%s\t%zu\t%.6e\t%.6e\t%.4f\t%d\t%.4f\t%.3f\t%zu\t%zu\t%.2f\n", plane.name.c_str(),
-                     c2p::to_string(m), su.points, su.mean_eps_recov, su.max_eps_recov, su.mean_iterations,
-                     su.max_iterations, su.mean_evaluations, su.mean_eos_calls, su.failures, su.inaccurate,
-                     su.ns_per_recovery);
+        std::printf("%-5s %-10s %7zu %10.3e %10.3e %7.3f %4d %7.3f %9.2f %8zu %7zu %6zu %6zu %4zu %9zu %9.1f\n",
+                    plane.name.c_str(), c2p::to_string(m), su.points, su.mean_eps_recov, su.max_eps_recov,
+                    su.mean_iterations, su.max_iterations, su.mean_evaluations, su.mean_eos_calls, su.failures,
+                    su.flagged, su.silently_wrong, su.policy, su.nan, su.imprecise, su.ns_per_recovery);
+        std::fprintf(sum, "%s\t%s\t%zu\t%.6e\t%.6e\t%.4f\t%d\t%.4f\t%.3f\t%zu\t%zu\t%zu\t%zu\t%zu\t%zu\t%.2f\n",
+                     plane.name.c_str(), c2p::to_string(m), su.points, su.mean_eps_recov, su.max_eps_recov,
+                     su.mean_iterations, su.max_iterations, su.mean_evaluations, su.mean_eos_calls, su.failures,
+                     su.flagged, su.silently_wrong, su.policy, su.nan, su.imprecise, su.ns_per_recovery);
       }
     }
     std::fclose(sum);
-    std::printf("wrote %s/{rhoT,Wb}_<method>.tsv and summary.tsv\n", o.out_dir.c_str());
-    std::printf("  iter: root-finder steps on the master function; evals: master-function evaluations\n"
-                "  (steps + bracket ends); failures: status != ok; inaccurate: ok but eps_recov > 1e-8\n");
+    std::printf("wrote %s/<plane>_<method>.tsv and summary.tsv\n", o.out_dir.c_str());
+    std::printf("  iter: root-finder steps on the master function; evals: master-function evaluations (steps +\n"
+                "  bracket ends); failures: not converged, no bracket, non-finite or atmosphere; flagged: status\n"
+                "  inaccurate or ambiguous; silent: status ok but the primitives miss the conserved variables by\n"
+                "  more than the accuracy %g with no policy rule fired (silently wrong); policy: the same with a\n"
+                "  state-moving policy rule fired (reported by its count); nan: NaN/inf primitives; imprecise: ok, the\n"
+                "  conserved variables reproduced, but eps_recov > 1e-8 (ill-conditioned: they allow no better)\n",
+                o.settings.accuracy);
+    if (o.fuzz > 0 && bad > 0) {
+      std::fprintf(stderr, "remnant-c2p-bench: %zu silently wrong or NaN recoveries\n", bad);
+      return 3;
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "remnant-c2p-bench: %s\n", e.what());
     return 1;

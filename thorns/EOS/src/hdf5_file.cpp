@@ -55,7 +55,8 @@ std::vector<hsize_t> H5File::shape(const std::string& name) const {
   return dims;
 }
 
-std::vector<double> H5File::read(const std::string& name, const std::vector<hsize_t>& expect) const {
+std::vector<double> H5File::read(const std::string& name, const std::vector<hsize_t>& expect,
+                                 bool allow_integer) const {
   auto dims = shape(name);
   if (!expect.empty() && dims != expect)
     throw TableError(path_, name, "has shape " + shape_str(dims) + ", expected " + shape_str(expect));
@@ -68,6 +69,10 @@ std::vector<double> H5File::read(const std::string& name, const std::vector<hsiz
     H5Dclose(ds);
     throw TableError(path_, name, "is not numeric");
   }
+  if (cls == H5T_INTEGER && !allow_integer) {
+    H5Dclose(ds);
+    throw TableError(path_, name, "is stored as integers; expected floating-point values (float32/float64)");
+  }
   hsize_t n = 1;
   for (auto d : dims) n *= d;
   std::vector<double> v(n);
@@ -78,7 +83,7 @@ std::vector<double> H5File::read(const std::string& name, const std::vector<hsiz
 }
 
 double H5File::scalar(const std::string& name) const {
-  auto v = read(name);
+  auto v = read(name, {}, true);
   if (v.size() != 1) throw TableError(path_, name, "expected a single value, found " + std::to_string(v.size()));
   return v[0];
 }

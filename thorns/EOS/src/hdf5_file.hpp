@@ -18,8 +18,11 @@ class H5File {
   const std::string& path() const { return path_; }
   bool has(const std::string& name) const;
   std::vector<hsize_t> shape(const std::string& name) const;
-  // Reads a dataset as doubles (any numeric type); `expect` checks the shape when not empty.
-  std::vector<double> read(const std::string& name, const std::vector<hsize_t>& expect = {}) const;
+  // Reads a dataset as doubles; `expect` checks the shape when not empty. Integer datasets are an
+  // error unless allow_integer (counts and flags may be integers; log10 values stored as integers
+  // have lost their digits).
+  std::vector<double> read(const std::string& name, const std::vector<hsize_t>& expect = {},
+                           bool allow_integer = false) const;
   double scalar(const std::string& name) const;  // a 0-d or 1-element dataset
 
  private:

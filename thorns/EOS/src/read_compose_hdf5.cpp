@@ -42,8 +42,8 @@ RawTable read_compose_hdf5(const std::string& path, const ReadOptions& opts) {
       for (auto& x : g.Xa) x *= 4;
     }
     if (f.has("Y[N]") && f.has("A[N]") && f.has("Z[N]")) {
-      g.Abar = reorder(f.read("A[N]", shape));
-      g.Zbar = reorder(f.read("Z[N]", shape));
+      g.Abar = reorder(f.read("A[N]", shape, true));
+      g.Zbar = reorder(f.read("Z[N]", shape, true));
       g.Xh = reorder(f.read("Y[N]", shape));
       for (std::size_t i = 0; i < g.Xh.size(); ++i) g.Xh[i] *= g.Abar[i];
     }

@@ -65,8 +65,9 @@ RawTable read_stellarcollapse(const std::string& path, const ReadOptions& opts) 
     raw.cs2.v[i] = c;
   }
 
-  auto optional = [&](RawField& field, const char* name) {
-    if (f.has(name)) field = {name, f.read(name, shape)};
+  // Abar and Zbar may be stored as integers (nucleon numbers); all else must be floating point.
+  auto optional = [&](RawField& field, const char* name, bool allow_integer = false) {
+    if (f.has(name)) field = {name, f.read(name, shape, allow_integer)};
   };
   optional(raw.entropy, "entropy");
   optional(raw.mu_e, "mu_e");
@@ -76,8 +77,8 @@ RawTable read_stellarcollapse(const std::string& path, const ReadOptions& opts) 
   optional(raw.Xh, "Xh");
   optional(raw.Xn, "Xn");
   optional(raw.Xp, "Xp");
-  optional(raw.Abar, "Abar");
-  optional(raw.Zbar, "Zbar");
+  optional(raw.Abar, "Abar", true);
+  optional(raw.Zbar, "Zbar", true);
   return raw;
 }
 

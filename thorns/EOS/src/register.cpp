@@ -37,6 +37,7 @@ eos::EosConfig config_from(const Context& ctx) {
   c.read.compose_mu_e =
       word("compose_mu_e") == "mu_l" ? eos::ComposeElectronMu::mu_l : eos::ComposeElectronMu::mu_l_minus_mu_q;
   c.read.build.clamp_cs2 = ctx.param<bool>("EOS", "clamp_cs2");
+  c.read.build.max_inconsistent_fraction = ctx.param<double>("EOS", "table_max_inconsistent_fraction");
   return c;
 }
 

@@ -71,6 +71,44 @@ void require_finite(const RawTable& raw, const RawField& f) {
     throw TableError(raw.file, f.dataset, std::to_string(bad) + " NaN/Inf values, first at " + at_str(raw, first));
 }
 
+// p along rho at fixed (T, Ye): pairs where it falls are counted (a warning; LS220-type
+// tables have a few in the nuclear/NSE blend region) and their points marked inconsistent; a fall by
+// more than max_pressure_drop between neighbours is a corrupted value and an error.
+void check_pressure_monotonic(const RawTable& raw, const BuildOptions& opts, std::vector<std::uint8_t>& inconsistent,
+                              CheckReport& rep) {
+  const std::size_t nr = raw.rho.size(), nt = raw.T.size(), ny = raw.ye.size();
+  const auto& p = raw.press.v;
+  std::size_t bad = 0, first = 0;
+  for (std::size_t iy = 0; iy < ny; ++iy)
+    for (std::size_t it = 0; it < nt; ++it)
+      for (std::size_t ir = 0; ir + 1 < nr; ++ir) {
+        const std::size_t i = (iy * nt + it) * nr + ir;
+        if (p[i + 1] >= p[i]) continue;  // equal: radiation-dominated corners
+        if (bad++ == 0) first = i;
+        inconsistent[i] = inconsistent[i + 1] = 1;
+        if (p[i + 1] > 0 && p[i + 1] * opts.max_pressure_drop < p[i]) {  // p <= 0: its own warning
+          std::ostringstream m;
+          m.precision(6);
+          m << "p falls from " << p[i] << " to " << p[i + 1] << " (code units) between neighbouring rho points at "
+            << at_str(raw, i) << " and the next rho: a corrupted value (p must rise with rho; a fall by more than a "
+            << "factor " << opts.max_pressure_drop << " is not physical)";
+          throw TableError(raw.file, raw.press.dataset, m.str());
+        }
+      }
+  if (bad)
+    rep.warn(raw.file, raw.press.dataset, bad,
+             "p falls with rho between adjacent rho points, first at " + at_str(raw, first));
+}
+
+// Flags the (up to 4) (iye, irho) cells that have grid point i's column as a corner.
+void mark_acausal(TableData& t, std::size_t i) {
+  const std::size_t nr = t.lrho.n, nt = t.lT.n, ny = t.ye.n;
+  if (t.acausal_cell.empty()) t.acausal_cell.assign(nr * ny, 0);
+  const std::size_t ir = i % nr, iy = i / (nr * nt);
+  for (std::size_t dy = 0; dy <= std::min<std::size_t>(iy, 1); ++dy)
+    for (std::size_t dr = 0; dr <= std::min<std::size_t>(ir, 1); ++dr) t.acausal_cell[(iy - dy) * nr + (ir - dr)] = 1;
+}
+
 }  // namespace
 
 std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& opts) {
@@ -80,6 +118,11 @@ std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& o
   t->lrho = make_axis(raw, raw.rho, true, raw.rho_dataset, opts.axis_tolerance);
   t->lT = make_axis(raw, raw.T, true, raw.T_dataset, opts.axis_tolerance);
   t->ye = make_axis(raw, raw.ye, false, raw.ye_dataset, opts.axis_tolerance);
+  for (std::size_t i = 0; i < raw.ye.size(); ++i)
+    if (!(raw.ye[i] >= 0 && raw.ye[i] <= 1))
+      throw TableError(raw.file, raw.ye_dataset,
+                       "Ye axis value " + std::to_string(i) + " is " + std::to_string(raw.ye[i]) +
+                           ": an electron fraction must lie in [0, 1]");
   const std::size_t n = raw.size(), nr = raw.rho.size(), nt = raw.T.size(), ny = raw.ye.size();
   CheckReport& rep = t->report;
 
@@ -98,10 +141,20 @@ std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& o
     for (RawField* f : {&raw.mu_e, &raw.mu_p, &raw.mu_n}) require(raw, *f, "chemical potential"), require_finite(raw, *f);
   else
     rep.info(raw.file, "mu_e", 0, "no chemical potentials: beta equilibrium unavailable");
-  t->has_compo = raw.Xn.present() && raw.Xp.present();
+  // Composition is all six fields or none: a partial set is reported and not used (no zeros
+  // standing in for a missing Xa).
+  {
+    std::string missing, present;
+    const std::pair<RawField*, const char*> fields[] = {{&raw.Xa, "Xa"},     {&raw.Xh, "Xh"},     {&raw.Xn, "Xn"},
+                                                        {&raw.Xp, "Xp"},     {&raw.Abar, "Abar"}, {&raw.Zbar, "Zbar"}};
+    for (const auto& [f, name] : fields) (f->present() ? present : missing) += std::string(" ") + name;
+    t->has_compo = missing.empty();
+    if (!t->has_compo && !present.empty())
+      rep.warn(raw.file, "composition", 0,
+               "incomplete composition: has" + present + " but not" + missing + "; composition disabled");
+  }
   if (t->has_compo) {
     for (RawField* f : {&raw.Xa, &raw.Xh, &raw.Xn, &raw.Xp, &raw.Abar, &raw.Zbar}) {
-      if (!f->present()) f->v.assign(n, 0.0);
       require(raw, *f, "composition");
       std::size_t bad = 0, first = 0;
       for (std::size_t i = 0; i < n; ++i)
@@ -134,6 +187,11 @@ std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& o
                      "eps + energy_shift <= 0 at " + at_str(raw, emin_it - raw.eps.v.begin()) +
                          ": energy_shift too small");
 
+  // Thermodynamic consistency, point by point: a point fails if its cs2 leaves [0, 1] or it is an
+  // end of an adjacent pair along which p does not rise with rho or eps does not rise with T.
+  std::vector<std::uint8_t> inconsistent(n, 0);
+  check_pressure_monotonic(raw, opts, inconsistent, rep);
+
   // cs2 must lie in [0, 1].
   {
     std::size_t bad = 0, first = 0;
@@ -141,6 +199,8 @@ std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& o
     for (std::size_t i = 0; i < n; ++i) {
       double& c = raw.cs2.v[i];
       if (c < 0 || c > 1) {
+        inconsistent[i] = 1;
+        if (c > 1) mark_acausal(*t, i);
         if (bad++ == 0) first = i;
         lo = std::min(lo, c), hi = std::max(hi, c);
         if (opts.clamp_cs2) c = std::clamp(c, 0.0, 1.0);
@@ -165,12 +225,25 @@ std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& o
           if (!(raw.eps.v[i + nr] > raw.eps.v[i])) {
             if (bad++ == 0) first = i;
             mono_col[iy * nr + ir] = 0;
+            inconsistent[i] = inconsistent[i + nr] = 1;
           }
         }
     if (bad)
       rep.warn(raw.file, raw.eps.dataset, bad,
                "eps does not increase with T between adjacent T points, first at " + at_str(raw, first) +
                    "; eps -> T takes the root nearest the temperature guess there");
+  }
+  {
+    const std::size_t bad = std::count(inconsistent.begin(), inconsistent.end(), std::uint8_t(1));
+    const double fraction = double(bad) / double(n);
+    std::ostringstream m;
+    m << "thermodynamic checks (cs2 in [0, 1], p rising with rho, eps rising with T) fail at " << bad << " of " << n
+      << " points (" << 100 * fraction << " %); the limit is " << 100 * opts.max_inconsistent_fraction << " %";
+    if (fraction > opts.max_inconsistent_fraction)
+      throw TableError(raw.file, raw.press.dataset,
+                       m.str() + ": the table is not a usable EOS (raise EOS::table_max_inconsistent_fraction only "
+                                 "if you know why)");
+    if (bad) rep.info(raw.file, "", 0, m.str());
   }
   t->monotone_cell.assign(nr * ny, 1);
   for (std::size_t iy = 0; iy < ny; ++iy)

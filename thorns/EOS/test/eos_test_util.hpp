@@ -63,9 +63,11 @@ struct Synthetic {
 };
 
 // Writes a RawTable as a StellarCollapse HDF5 file (cgs, log10), for reader and check tests.
-// `skip` names a dataset to leave out; `bad_shape` one to write with a wrong shape.
+// `skip` names a dataset to leave out; `bad_shape` one to write with a wrong shape; `as_integer` one
+// to store as int32 (rounded); `composition` adds Xa, Xh, Xn, Xp, Abar, Zbar (placeholders).
 inline void write_stellarcollapse(const std::string& path, const remnant::eos::RawTable& r, double shift_cgs,
-                                  const std::string& skip = "", const std::string& bad_shape = "") {
+                                  const std::string& skip = "", const std::string& bad_shape = "",
+                                  const std::string& as_integer = "", bool composition = false) {
   namespace u = remnant::units;
   hid_t f = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
   const hsize_t nr = r.rho.size(), nt = r.T.size(), ny = r.ye.size();
@@ -73,8 +75,13 @@ inline void write_stellarcollapse(const std::string& path, const remnant::eos::R
     if (name == skip) return;
     if (name == bad_shape) dims.back() -= 1;
     hid_t sp = H5Screate_simple(int(dims.size()), dims.data(), nullptr);
-    hid_t ds = H5Dcreate2(f, name.c_str(), H5T_NATIVE_DOUBLE, sp, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
+    const bool integer = name == as_integer;
+    hid_t ds = H5Dcreate2(f, name.c_str(), integer ? H5T_STD_I32LE : H5T_NATIVE_DOUBLE, sp, H5P_DEFAULT, H5P_DEFAULT,
+                          H5P_DEFAULT);
+    std::vector<int> iv(v.size());
+    for (std::size_t k = 0; k < v.size(); ++k) iv[k] = int(std::lround(v[k]));
+    if (integer) H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, iv.data());
+    else H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
     H5Dclose(ds);
     H5Sclose(sp);
   };
@@ -95,6 +102,15 @@ inline void write_stellarcollapse(const std::string& path, const remnant::eos::R
   put("mu_e", r.mu_e.v, d3);
   put("mu_p", r.mu_p.v, d3);
   put("mu_n", r.mu_n.v, d3);
+  if (composition) {
+    const std::size_t n = r.press.v.size();
+    put("Xa", std::vector<double>(n, 0.1), d3);
+    put("Xh", std::vector<double>(n, 0.2), d3);
+    put("Xn", std::vector<double>(n, 0.4), d3);
+    put("Xp", std::vector<double>(n, 0.3), d3);
+    put("Abar", std::vector<double>(n, 56.0), d3);
+    put("Zbar", std::vector<double>(n, 26.0), d3);
+  }
   put("energy_shift", {shift_cgs}, {1});
   put("have_rel_cs2", {1.0}, {1});
   H5Fclose(f);

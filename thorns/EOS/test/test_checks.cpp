@@ -82,6 +82,12 @@ TEST(EOSChecks, Cs2OutsideUnitIntervalIsCountedAndClamped) {
   Tabulated<> eos(t);
   EXPECT_GE(eos.cs2(raw.rho[0], raw.T[0], raw.ye[0]), 0.0);
   EXPECT_LE(eos.cs2(raw.rho[1], raw.T[0], raw.ye[0]), 1.0);
+  // cs2 > 1 marks the (rho, Ye) cells around those points as acausal (con2prim scans roots there);
+  // cs2 < 0 alone does not.
+  EXPECT_TRUE(eos.acausal(std::sqrt(raw.rho[1] * raw.rho[2]), raw.ye[0]));
+  EXPECT_TRUE(eos.acausal(std::sqrt(raw.rho[0] * raw.rho[1]), raw.ye[0]));
+  EXPECT_FALSE(eos.acausal(std::sqrt(raw.rho[5] * raw.rho[6]), raw.ye[0]));
+  EXPECT_FALSE(eos.acausal(raw.rho[1], raw.ye[3]));
 }
 
 TEST(EOSChecks, NonMonotonicEpsIsCountedAndInversionFollowsTheGuess) {
@@ -117,4 +123,87 @@ TEST(EOSChecks, NegativePressureIsShiftedAndReported) {
   Tabulated<> eos(t);
   const std::size_t nr = raw.rho.size();
   EXPECT_NEAR(eos.press(raw.rho[10 % nr], raw.T[0], raw.ye[0]), -1e-30, 1e-40);
+}
+
+// --- issue 16, item 10: tables that used to load without complaint --------------------------------
+
+TEST(EOSChecks, YeAxisOutsideTheUnitIntervalIsAnError) {
+  Synthetic s;
+  s.y0 = -0.2, s.y1 = 1.4;
+  const std::string path = eos_test::temp_path("ye_range.h5");
+  eos_test::write_stellarcollapse(path, s.raw(), kShift);
+  expect_table_error(path, "ye", "must lie in [0, 1]");
+}
+
+TEST(EOSChecks, LogPressStoredAsIntegersIsAnError) {
+  const std::string path = eos_test::temp_path("int_logpress.h5");
+  eos_test::write_stellarcollapse(path, Synthetic().raw(), kShift, "", "", "logpress");
+  expect_table_error(path, "logpress", "stored as integers");
+}
+
+TEST(EOSChecks, IntegerScalarsAndAxesOfCountsStayAllowed) {
+  // energy_shift as int32 (the shared Hempel table stores it so) still loads.
+  const std::string path = eos_test::temp_path("int_shift.h5");
+  eos_test::write_stellarcollapse(path, Synthetic().raw(), 2e19, "", "", "energy_shift");
+  EXPECT_NO_THROW(load_table(path));
+}
+
+TEST(EOSChecks, IncompleteCompositionIsReportedAndNotUsed) {
+  const std::string path = eos_test::temp_path("no_xa.h5");
+  eos_test::write_stellarcollapse(path, Synthetic().raw(), kShift, "Xa", "", "", true);
+  auto t = load_table(path);
+  EXPECT_FALSE(t->has_compo);
+  const CheckIssue* w = t->report.find("composition");
+  ASSERT_NE(w, nullptr) << t->report.str();
+  EXPECT_NE(w->message.find("Xa"), std::string::npos) << w->message;
+  // With every field present, composition is on.
+  eos_test::write_stellarcollapse(path, Synthetic().raw(), kShift, "", "", "", true);
+  EXPECT_TRUE(load_table(path)->has_compo);
+}
+
+TEST(EOSChecks, OnePressure27OrdersOffIsAnError) {
+  for (double factor : {1e27, 1e-27}) {
+    auto raw = Synthetic().raw();
+    raw.press.v[3 * raw.rho.size() + 5] *= factor;  // irho = 5 at iT = 3, iYe = 0
+    const std::string path = eos_test::temp_path("spike.h5");
+    eos_test::write_stellarcollapse(path, raw, kShift);
+    expect_table_error(path, "logpress", "corrupted value");
+  }
+}
+
+TEST(EOSChecks, SmallPressureDipIsCountedNotFatal) {
+  auto raw = Synthetic().raw();
+  raw.press.v[6] = 0.9 * raw.press.v[5];  // a dip of 10 %: as in a blend region
+  auto t = build_table(raw);
+  const CheckIssue* w = t->report.find("press");
+  ASSERT_NE(w, nullptr) << t->report.str();
+  EXPECT_EQ(w->count, 1u);
+}
+
+TEST(EOSChecks, TooManyInconsistentPointsStopTheLoad) {
+  auto raw = Synthetic().raw();
+  for (std::size_t i = 0; i < raw.cs2.v.size(); i += 4) raw.cs2.v[i] = 1.5;  // 25 % acausal
+  try {
+    build_table(raw);
+    ADD_FAILURE() << "no error";
+  } catch (const TableError& e) {
+    EXPECT_NE(std::string(e.what()).find("fail at"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("25 %"), std::string::npos) << e.what();
+  }
+  BuildOptions lax;
+  lax.max_inconsistent_fraction = 0.3;
+  EXPECT_NO_THROW(build_table(raw, lax));
+}
+
+TEST(EOSChecks, SharedTablesPassTheConsistencyChecks) {
+  for (const char* name : {"SFHo_reduced_39r_39t_20y.h5", "Hempel_SFHoEOS_rho222_temp180_ye60_version_1.1_20120817_simple.h5",
+                           "SFHo_psolver_compose.h5", "SFHo_reduced_39r_39t_20y_compose.h5"}) {
+    const std::string path = eos_test::shared_eos(name);
+    if (!std::filesystem::exists(path)) continue;
+    ReadOptions o;  // the SFHo StellarCollapse file holds relativistic cs2 without saying so
+    if (std::string(name) == "SFHo_reduced_39r_39t_20y.h5") o.sc_cs2 = Cs2Convention::relativistic;
+    std::shared_ptr<const TableData> t;
+    EXPECT_NO_THROW(t = load_table(path, o)) << name;
+    if (t) std::printf("%s:\n%s", name, t->report.str().c_str());
+  }
 }

@@ -52,10 +52,12 @@ bool starts(const std::string& a, const char* p, std::string& rest) {
   return true;
 }
 
+// A finite number: NaN and inf are refused (they would be evaluated at the table's edge).
 double number(const std::string& s) {
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   if (end == s.c_str() || *end) throw EosError("not a number: '" + s + "'");
+  if (!std::isfinite(v)) throw EosError("'" + s + "' is not a finite number");
   return v;
 }
 
@@ -83,8 +85,11 @@ Cli parse(int argc, char** argv) {
       c.read.eps_shift = number(v);
     } else if (starts(a, "--T=", v)) {
       c.T_slice = number(v);
+      if (!(c.T_slice > 0)) throw EosError("--T=" + v + ": allowed T > 0 MeV");
     } else if (starts(a, "--n=", v)) {
-      c.n_slice = int(number(v));
+      const double n = number(v);
+      if (n != std::floor(n) || n < 2 || n > 1e7) throw EosError("--n=" + v + ": allowed integers 2 .. 1e7");
+      c.n_slice = int(n);
     } else if (a == "--code") {
       c.code = true;
     } else if (a == "--eps") {
@@ -152,6 +157,12 @@ int run(const Cli& c) {
   } else if (c.cmd == "eval") {
     if (c.numbers.empty() || c.numbers.size() % 3) throw EosError("eval needs RHO T YE triples");
     for (std::size_t i = 0; i < c.numbers.size(); i += 3) {
+      const std::string which = "triple " + std::to_string(i / 3 + 1) + ": ";
+      if (!(c.numbers[i] > 0)) throw EosError(which + "RHO must be > 0, got " + std::to_string(c.numbers[i]));
+      if (!c.from_eps && !(c.numbers[i + 1] > 0))
+        throw EosError(which + "T must be > 0 MeV, got " + std::to_string(c.numbers[i + 1]));
+      if (!(c.numbers[i + 2] >= 0 && c.numbers[i + 2] <= 1))
+        throw EosError(which + "YE must lie in [0, 1], got " + std::to_string(c.numbers[i + 2]));
       const double rho = c.numbers[i] * to_code, ye = c.numbers[i + 2];
       double T = c.numbers[i + 1];
       if (c.from_eps) {

@@ -26,6 +26,7 @@ static_assert(vars::HydroBase::cons_rhs::ncomp == kNumCons && vars::GRMHD::flux_
 struct Groups {
   int cons = -1, cons_rhs = -1, prim = -1, metric = -1;
   std::array<int, 3> flux{-1, -1, -1};
+  int budget = -1, budget_rhs = -1;  // HydroBase::mass_budget (outflow, source) and its rhs
   static Groups of(const Context& ctx) {
     Groups g;
     g.cons = Cons::id(ctx);
@@ -33,6 +34,8 @@ struct Groups {
     g.prim = Prim::id(ctx);
     g.metric = Metric::id(ctx);
     g.flux = {vars::GRMHD::flux_x::id(ctx), vars::GRMHD::flux_y::id(ctx), vars::GRMHD::flux_z::id(ctx)};
+    g.budget = vars::HydroBase::mass_budget::id(ctx);
+    g.budget_rhs = vars::HydroBase::mass_budget_rhs::id(ctx);
     return g;
   }
 };

@@ -5,6 +5,7 @@
 #include "HydroBase/sweeps.hpp"
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
+#include "mass_budget.hpp"
 #include "rhs.hpp"
 #include "shock_tube.hpp"
 #include "time_step.hpp"
@@ -44,7 +45,11 @@ void calc_rhs(Context& ctx) {
   for (int d = ctx.grid().dimension(); d < 3; ++d)
     for (Block* b : ctx.grid().local_blocks()) std::fill(b->data(g.flux[d]), b->data(g.flux[d]) + b->size(g.flux[d]), 0.0);
   ctx.grid().correct_fluxes(faces);
-  for (Block* b : ctx.grid().local_blocks()) compute_block_rhs(g, *b);
+  const DomainCells dom = DomainCells::of(ctx);
+  for (Block* b : ctx.grid().local_blocks()) {
+    compute_block_rhs(g, *b);
+    outflow_rhs_block(g, dom, *b);  // the rest mass crossing the domain boundary (mass budget)
+  }
 }
 
 void con2prim(Context& ctx) { hydrobase::recover_all(ctx, "GRMHD_Con2Prim"); }

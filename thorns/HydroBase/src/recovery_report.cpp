@@ -14,16 +14,17 @@ MatterGroups MatterGroups::of(const Context& ctx) {
   g.cons = vars::HydroBase::cons::id(ctx);
   g.prim = vars::HydroBase::prim::id(ctx);
   g.metric = vars::Spacetime::metric::id(ctx);
-  for (int id : {g.cons, g.prim, g.metric}) ctx.check_access(id);
+  g.budget = vars::HydroBase::mass_budget::id(ctx);
+  for (int id : {g.cons, g.prim, g.metric, g.budget}) ctx.check_access(id);
   return g;
 }
 
 void report_recovery(Context& ctx, const con2prim::Diagnostics& d, const char* where, const std::string& fatal_cell) {
-  std::uint64_t local[3] = {d.fatal_cells, d.count(con2prim::Status::not_converged) + d.count(con2prim::Status::no_bracket) +
+  std::uint64_t local[4] = {d.fatal_cells, d.count(con2prim::Status::not_converged) + d.count(con2prim::Status::no_bracket) +
                                                d.count(con2prim::Status::non_finite) + d.count(con2prim::Status::invalid_input),
-                            d.cells};
-  std::uint64_t global[3];
-  MPI_Allreduce(local, global, 3, MPI_UINT64_T, MPI_SUM, ctx.comm());
+                            d.cells, d.count(con2prim::Status::inaccurate) + d.count(con2prim::Status::ambiguous)};
+  std::uint64_t global[4];
+  MPI_Allreduce(local, global, 4, MPI_UINT64_T, MPI_SUM, ctx.comm());
   if (global[0] > 0) {
     std::ostringstream m;
     m << where << ": a fatal error-policy rule fired in " << global[0] << " cells (rho > rho_max, eps > eps_max or T > T_max)";
@@ -34,6 +35,14 @@ void report_recovery(Context& ctx, const con2prim::Diagnostics& d, const char* w
     std::ostringstream m;
     m << where << ": primitive recovery failed in " << global[1] << " of " << global[2]
       << " cells (set to atmosphere or best estimate)";
+    ctx.warn(m.str());
+  }
+  // Recoveries that do not reproduce their conserved variables (or not uniquely): kept, counted, warned.
+  if (global[3] > 0 && ctx.rank() == 0) {
+    std::ostringstream m;
+    m << where << ": " << global[3] << " of " << global[2]
+      << " recoveries inaccurate or ambiguous (conserved variables not reproduced to Con2Prim::accuracy, or "
+         "not uniquely: acausal table); the closest state is kept";
     ctx.warn(m.str());
   }
 }

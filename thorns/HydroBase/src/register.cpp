@@ -1,4 +1,6 @@
 // HydroBase: binds the scheduled functions of thorn.yaml.
+#include <algorithm>
+
 #include "HydroBase/sweeps.hpp"
 #include "remnant/registrar.hpp"
 
@@ -11,7 +13,10 @@ void initial_cons(Context& ctx) {
   const auto& atm = ctx.service<atmosphere::Atmosphere>("atmosphere");
   const MatterGroups g = MatterGroups::of(ctx);
   con2prim::Diagnostics diag;
-  for (Block* b : ctx.grid().local_blocks()) prim_to_cons_block(eos, settings, atm, g, *b, diag);
+  for (Block* b : ctx.grid().local_blocks()) {
+    prim_to_cons_block(eos, settings, atm, g, *b, diag);
+    std::fill_n(b->data(g.budget), b->size(g.budget), 0.0);  // the budget starts with the evolution
+  }
   report_recovery(ctx, diag, "HydroBase_InitialCons");
 }
 

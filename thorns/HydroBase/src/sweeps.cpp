@@ -79,6 +79,8 @@ template <class E>
 void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm, const MatterGroups& g,
                   Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell) {
   const CellAccess acc(g, b);
+  // The mass budget's source component, where the caller has the group (a stand-alone block may not).
+  double* const source = g.budget >= 0 ? b.field(g.budget, 1).origin : nullptr;
   for_cells(b, acc, [&](std::ptrdiff_t o, double psi4, double psi6, const std::array<double, 3>& fd) {
     con2prim::Conserved c = acc.load_cons(o, 1.0 / psi6);
     con2prim::Primitives p;
@@ -95,7 +97,10 @@ void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::A
       fatal_cell = m;
     }
     acc.store_prim(o, p);
+    const double D_before = acc.cons[0].origin[o];
     acc.store_cons(o, c, psi6);
+    // What the atmosphere and the policy added to D (mass budget, see mass_budget.hpp).
+    if (source) source[o] += acc.cons[0].origin[o] - D_before;
   });
 }
 

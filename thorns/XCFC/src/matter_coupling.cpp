@@ -45,7 +45,7 @@ std::uint64_t recover_primitives(Context& ctx, const MatterGroups& g) {
   const auto& eos = ctx.service<eos::EOS>("eos");
   const auto& s = ctx.service<con2prim::Settings>("con2prim");
   const auto& atm = ctx.service<atmosphere::Atmosphere>("atmosphere");
-  const hydrobase::MatterGroups groups{g.cons, g.prim, g.metric};
+  const hydrobase::MatterGroups groups = hydrobase::MatterGroups::of(ctx);  // with the mass budget
   con2prim::Diagnostics diag;
   std::string first_fatal_cell;
   for (Block* b : ctx.grid().local_blocks()) hydrobase::recover_block(eos, s, atm, groups, *b, diag, first_fatal_cell);

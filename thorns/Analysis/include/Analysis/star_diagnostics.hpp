@@ -13,6 +13,10 @@ struct StarDiagnostics {
   std::int64_t iteration = 0;
   double time = 0;
   double rho_c = 0, rho_max = 0, alpha_c = 0, alpha_min = 0, psi_c = 0, psi_max = 0, rest_mass = 0;
+  // Rest-mass budget (HydroBase::mass_budget): mass that left through the outer boundary so far, D
+  // added by the atmosphere and the error policy so far, and rest_mass + outflow - source, which
+  // the scheme keeps constant to round-off.
+  double outflow = 0, atmosphere_source = 0, mass_budget = 0;
 };
 
 struct History {

@@ -36,6 +36,10 @@ class KastaunSolver {
     rperp2_Bc2_ = std::max(0.0, r2_ * Bc2_ - rB_ * rB_);  // r_perp^2 Bc^2
     h_min_ = thermo_.bounds().h_min;
     v0sq_ = r2_ / (h_min_ * h_min_ + r2_);
+    // 1 - v0^2, exactly h_min^2 / (h_min^2 + r^2) where the subtraction would round to 0 (r above
+    // ~1e8 h_min, e.g. W = 1e6 with a hot gas): W stays finite at the cap.
+    one_minus_v0sq_ = 1 - v0sq_;
+    if (!(one_minus_v0sq_ > 0)) one_minus_v0sq_ = h_min_ * h_min_ / (h_min_ * h_min_ + r2_);
   }
 
   // r_bar^2(mu) = r^2 chi^2 + mu chi (1 + chi) (r.Bc)^2.
@@ -58,7 +62,7 @@ class KastaunSolver {
     const double rb2 = rbar2(mu, chi);
     const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
     const double v2 = std::min(mu * mu * rb2, v0sq_);
-    const double W = 1 / std::sqrt(1 - v2);
+    const double W = 1 / std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);
     const double rho0 = D_ / W;
     const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
     // eps clamped to [eps_low(rho, Ye), eps_high(rho, Ye)] and T from eps, guessed from the last call.
@@ -70,19 +74,39 @@ class KastaunSolver {
     return e;
   }
 
-  RootSolution solve(const Settings& s) {
-    RootSolution out;
-    // (iii) mu_+ by Newton on f_a in (0, 1/h_min]; f_a(1/h_min) >= 0 always.
+  // (iii) mu_+ by Newton on f_a in (0, 1/h_min] (f_a(1/h_min) >= 0 always), and the ends of the
+  // bracket (0, mu_+], with a round-off margin above mu_+ (f(mu_+) >= 0 in exact arithmetic).
+  // False when f does not change sign on it.
+  bool bracket(Eval& lo, Eval& hi, RootSolution& out) {
     const double mu_max = 1 / h_min_;
     RootStats aux_stats;
     const double mu_plus = newton_bracketed([&](double mu, double& f, double& df) { aux(mu, f, df); }, 0.0,
                                             mu_max, 1e-14, 60, aux_stats);
     out.aux_iterations = aux_stats.iterations;
-    // (iv) Brent on (0, mu_+], with a round-off margin above mu_+ (f(mu_+) >= 0 in exact arithmetic).
-    Eval hi = (*this)(std::min(mu_max, mu_plus * (1 + 1e-12)));
+    hi = (*this)(std::min(mu_max, mu_plus * (1 + 1e-12)));
     if (hi.f < 0 && hi.x < mu_max) hi = (*this)(mu_max);
-    const Eval lo = (*this)(0.0);
-    if (!(hi.f >= 0 && lo.f <= 0)) {
+    lo = (*this)(0.0);
+    return hi.f >= 0 && lo.f <= 0;
+  }
+
+  // The solution at a root (with the far end of its final bracket, for the secant polish).
+  RootSolution solution(Eval root, const Eval& far, const RootStats& st, const Settings& s, RootSolution out) {
+    if (s.secant_polish) root = secant_polish(root, far);
+    out.iterations = st.iterations;
+    out.converged = st.converged;
+    out.evaluations = thermo_.evaluations();
+    // (v) velocity from the root, v^i = mu chi (r^i + mu (r.Bc) Bc^i), at the speed of its W.
+    const double mu = root.x, chi = 1 / (1 + mu * Bc2_);
+    for (int i = 0; i < 3; ++i) out.v[i] = mu * chi * (r_up_[i] + mu * rB_ * Bc_[i]);
+    copy_root_state(root, out);
+    return out;
+  }
+
+  RootSolution solve(const Settings& s) {
+    RootSolution out;
+    Eval lo, hi;
+    // (iv) Brent on the bracket.
+    if (!bracket(lo, hi, out)) {
       out.bracketed = out.converged = false;
       out.evaluations = thermo_.evaluations();
       return out;
@@ -100,15 +124,7 @@ class KastaunSolver {
         st.iterations += st2.iterations;
       }
     }
-    if (s.secant_polish) root = secant_polish(root, far);
-    out.iterations = st.iterations;
-    out.converged = st.converged;
-    out.evaluations = thermo_.evaluations();
-    // (v) velocity from the root, v^i = mu chi (r^i + mu (r.Bc) Bc^i), at the speed of its W.
-    const double mu = root.x, chi = 1 / (1 + mu * Bc2_);
-    for (int i = 0; i < 3; ++i) out.v[i] = mu * chi * (r_up_[i] + mu * rB_ * Bc_[i]);
-    copy_root_state(root, out);
-    return out;
+    return solution(root, far, st, s, out);
   }
 
   // eps_hat_0(mu) below eps_low(rho_hat(mu), Ye), i.e. rule 8 clamps there (one EOS inversion).
@@ -117,7 +133,7 @@ class KastaunSolver {
     const double rb2 = rbar2(mu, chi);
     const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
     const double v2 = std::min(mu * mu * rb2, v0sq_);
-    const double W = 1 / std::sqrt(1 - v2);
+    const double W = 1 / std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);
     const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
     return (thermo_.inversion_flags(D_ / W, eps0) & eos::kInvBelowEpsLow) != 0;
   }
@@ -144,7 +160,7 @@ class KastaunSolver {
  private:
   MasterEos<E> thermo_;
   double D_;
-  double q_ = 0, r2_ = 0, Bc2_ = 0, rB_ = 0, rperp2_Bc2_ = 0, h_min_ = 1, v0sq_ = 0;
+  double q_ = 0, r2_ = 0, Bc2_ = 0, rB_ = 0, rperp2_Bc2_ = 0, h_min_ = 1, v0sq_ = 0, one_minus_v0sq_ = 1;
   Vec3 r_low_{}, r_up_{}, Bc_{};
 };
 

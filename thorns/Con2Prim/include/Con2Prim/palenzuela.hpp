@@ -48,20 +48,30 @@ class PalenzuelaSolver {
     return e;
   }
 
-  RootSolution solve(const Settings& s) {
-    RootSolution out;
+  // [1 + q - s, 2 + 2q - s], widened until f changes sign; false if it never does.
+  bool bracket(Eval& lo, Eval& hi, RootSolution&) {
     const double floor = 0.5 * thermo_.bounds().h_min;  // x = h W >= h_min
-    Eval lo = (*this)(std::max(1 + q_ - s_, floor));
-    Eval hi = (*this)(std::max(2 + 2 * q_ - s_, 2 * lo.x));
+    lo = (*this)(std::max(1 + q_ - s_, floor));
+    hi = (*this)(std::max(2 + 2 * q_ - s_, 2 * lo.x));
     for (int k = 0; k < 60 && lo.f > 0 && lo.x > floor; ++k) lo = (*this)(std::max(0.5 * lo.x, floor));
     for (int k = 0; k < 60 && hi.f < 0; ++k) hi = (*this)(2 * hi.x);
-    if (!(lo.f <= 0 && hi.f >= 0)) {
+    return lo.f <= 0 && hi.f >= 0;
+  }
+
+  RootSolution solve(const Settings& s) {
+    RootSolution out;
+    Eval lo, hi;
+    if (!bracket(lo, hi, out)) {
       out.bracketed = out.converged = false;
       out.evaluations = thermo_.evaluations();
       return out;
     }
     Eval root, far;
     const RootStats st = brent_root(*this, lo, hi, s.tolerance, s.max_iterations, root, far);
+    return solution(root, far, st, s, out);
+  }
+
+  RootSolution solution(Eval root, const Eval& far, const RootStats& st, const Settings& s, RootSolution out) {
     if (s.secant_polish) root = secant_polish(root, far);
     out.iterations = st.iterations;
     out.converged = st.converged;

@@ -7,6 +7,11 @@
 //   (v)   velocity from the root; atmosphere check rho < rho_thr; error policy (error_policy.hpp)
 //   (vi)  one EOS call at (rho, T, Ye) for p, cs2 (no further eps -> T inversion); the conserved
 //         variables are recomputed from the corrected primitives and written back into `cons`.
+//   acceptance: a converged result must reproduce the input conserved variables to
+//         Settings::accuracy (residual.hpp) unless the policy moved it on purpose. Otherwise, and
+//         wherever the table is acausal (cs2 > 1: several roots possible), every root
+//         of the master function is tried (root_scan.hpp): Status::inaccurate when none reproduces
+//         them, Status::ambiguous when several do.
 //
 // `cons` is NOT densitised (see state.hpp). NaN/inf input or D < 0 gives an atmosphere cell with
 // Status::invalid_input; the output is never NaN. B^i is copied to prim.B (non-finite B: set to 0).
@@ -18,6 +23,8 @@
 #include "Con2Prim/palenzuela.hpp"
 #include "Con2Prim/prim_to_cons.hpp"
 #include "Con2Prim/report.hpp"
+#include "Con2Prim/residual.hpp"
+#include "Con2Prim/root_scan.hpp"
 #include "Con2Prim/settings.hpp"
 #include "Con2Prim/state.hpp"
 
@@ -29,6 +36,66 @@ inline bool finite(const Vec3& v) { return std::isfinite(v[0]) && std::isfinite(
 inline bool finite(const Primitives& p) {
   return std::isfinite(p.rho) && std::isfinite(p.W) && std::isfinite(p.eps) && std::isfinite(p.press) &&
          std::isfinite(p.T) && std::isfinite(p.ye) && finite(p.v);
+}
+
+// Policy rules that move the state away from the conserved variables on purpose: their residual is
+// the policy's doing, not a wrong root.
+inline constexpr std::uint32_t kRulesMovingState =
+    kRuleEpsBelowMin | kRuleTBelowMin | kRuleEpsBelowLow | kRuleEpsAboveHigh | kRuleWAboveMax | kFatalRules;
+
+template <class E>
+bool acausal_at(const E& eos, const Primitives& p) {
+  if constexpr (requires { eos.acausal(p.rho, p.ye); }) return eos.acausal(p.rho, p.ye);
+  return false;
+}
+
+// One candidate root carried through steps (v)-(vi).
+struct Candidate {
+  Primitives prim;
+  std::uint32_t rules = 0;
+  bool atmosphere = false, finite = true;
+  double residual = INFINITY;
+  bool clean() const { return !atmosphere && finite && !(rules & kRulesMovingState); }
+};
+
+// (v) velocity, atmosphere check, error policy; (vi) the final EOS call; the residual against `input`.
+template <class E>
+Candidate complete(const E& eos, const Settings& s, const atmosphere::Atmosphere& atm, const Metric3& g,
+                   const Conserved& input, RootSolution sol, Primitives prim, std::uint32_t rules) {
+  Candidate c;
+  match_speed_to_W(g, sol.W, sol.v);
+  prim.rho = sol.rho;
+  prim.W = sol.W;
+  prim.v = sol.v;
+  prim.eps = sol.eps;
+  prim.T = sol.T;
+  if constexpr (E::has_temperature) rules |= rules_from_inversion(sol.inversion_flags);
+  if (atm.is_atmosphere(prim.rho)) {
+    c.atmosphere = true, c.rules = rules, c.prim = prim;
+    return c;
+  }
+  const double rho_recovered = prim.rho;
+  rules |= apply_error_policy(eos, s.policy, prim, ThermoInput::consistent);
+  const eos::Thermo th = eos.thermo(prim.rho, prim.T, prim.ye);
+  prim.press = th.press;
+  prim.cs2 = th.cs2;
+  if (prim.rho != rho_recovered) prim.eps = th.eps;  // rule 10 moved rho: eps follows (rho, T, Ye)
+  c.prim = prim;
+  c.rules = rules;
+  c.finite = finite(prim);
+  // Barotropic EOS: the system is over-determined (eps follows rho, tau enters the master function
+  // but cannot be matched), so there is nothing to accept or reject: residual 0.
+  if constexpr (E::has_temperature)
+    if (c.finite) c.residual = conserved_residual(prim_to_cons(prim, g), input, g);
+  if constexpr (!E::has_temperature) c.residual = 0;
+  return c;
+}
+
+template <class Solver, class E>
+int scan(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye,
+         RootSolution (&roots)[kMaxScanRoots]) {
+  Solver solver(eos, s, g, c, ye);
+  return scan_roots(solver, s, roots);
 }
 
 template <class E>
@@ -43,6 +110,7 @@ template <class E>
 Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& atm, const Metric3& g,
                Conserved& cons, Primitives& prim) {
   const auto calls0 = eos.counter().count();
+  const Conserved input = cons;
   Report rep;
   auto finish = [&] {
     cons = prim_to_cons(prim, g);
@@ -65,35 +133,52 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   if (atm.is_atmosphere(cons.D)) return to_atmosphere(Status::atmosphere);
   const eos::Bounds& b = eos.bounds();
   prim.ye = cons.DYe / cons.D;
-  if (prim.ye < b.ye_min) prim.ye = b.ye_min, rep.rules |= kRuleYeBelowMin;
-  if (prim.ye > b.ye_max) prim.ye = b.ye_max, rep.rules |= kRuleYeAboveMax;
+  std::uint32_t ye_rules = 0;
+  if (prim.ye < b.ye_min) prim.ye = b.ye_min, ye_rules |= kRuleYeBelowMin;
+  if (prim.ye > b.ye_max) prim.ye = b.ye_max, ye_rules |= kRuleYeAboveMax;
 
   // (ii)-(iv)
-  RootSolution sol = detail::solve_master(eos, s, g, cons, prim.ye);
+  const RootSolution sol = detail::solve_master(eos, s, g, cons, prim.ye);
   rep.iterations = sol.iterations;
   rep.evaluations = sol.evaluations;
   rep.aux_iterations = sol.aux_iterations;
-  if (!sol.bracketed) return to_atmosphere(Status::no_bracket);
+  if (!sol.bracketed) return rep.rules = ye_rules, to_atmosphere(Status::no_bracket);
   if (!sol.converged) rep.status = Status::not_converged;
 
-  // (v)
-  match_speed_to_W(g, sol.W, sol.v);
-  prim.rho = sol.rho;
-  prim.W = sol.W;
-  prim.v = sol.v;
-  prim.eps = sol.eps;
-  prim.T = sol.T;
-  if constexpr (E::has_temperature) rep.rules |= rules_from_inversion(sol.inversion_flags);
-  if (atm.is_atmosphere(prim.rho)) return to_atmosphere(Status::atmosphere);
-  const double rho_recovered = prim.rho;
-  rep.rules |= apply_error_policy(eos, s.policy, prim, ThermoInput::consistent);
-
-  // (vi)
-  const eos::Thermo th = eos.thermo(prim.rho, prim.T, prim.ye);
-  prim.press = th.press;
-  prim.cs2 = th.cs2;
-  if (prim.rho != rho_recovered) prim.eps = th.eps;  // rule 10 moved rho: eps follows (rho, T, Ye)
-  if (!detail::finite(prim)) return to_atmosphere(Status::non_finite);
+  // (v)-(vi), and the acceptance test: the result must reproduce the conserved variables. Where it
+  // does not (and the policy did not move it on purpose), or where the table is acausal and the
+  // root may not be the only one, every root of the master function is tried.
+  detail::Candidate best = detail::complete(eos, s, atm, g, input, sol, prim, ye_rules);
+  // A clamp by rules 8/9 does not excuse a residual here: raising eps to eps_low can create a root
+  // beside the physical one (LS220 above ~5e15 g/cm^3), so a clean root is looked for first.
+  const bool wrong = best.finite && !best.atmosphere && best.residual > s.accuracy &&
+                     (!(best.rules & detail::kRulesMovingState & ~(kRuleEpsBelowLow | kRuleEpsAboveHigh)) ||
+                      detail::acausal_at(eos, best.prim));
+  if (rep.status == Status::ok && (wrong || (best.clean() && detail::acausal_at(eos, best.prim)))) {
+    RootSolution roots[kMaxScanRoots];
+    const int n = s.method == Method::palenzuela ? detail::scan<PalenzuelaSolver<E>>(eos, s, g, cons, prim.ye, roots)
+                                                 : detail::scan<KastaunSolver<E>>(eos, s, g, cons, prim.ye, roots);
+    int good = best.clean() && best.residual <= s.accuracy;
+    for (int k = 0; k < n; ++k) {
+      const detail::Candidate c = detail::complete(eos, s, atm, g, input, roots[k], prim, ye_rules);
+      if (!(c.clean() && c.residual <= s.accuracy)) continue;
+      // A second state reproducing the conserved variables (not the first one found again).
+      if (good && std::abs(c.prim.rho - best.prim.rho) <= 1e-6 * best.prim.rho &&
+          std::abs(c.prim.eps - best.prim.eps) <= 1e-6 * (std::abs(best.prim.eps) + 1e-10))
+        continue;
+      if (!good) best = c, rep.root_scan = true;
+      ++good;
+    }
+    if (good > 1) rep.status = Status::ambiguous;
+  }
+  prim = best.prim;
+  rep.rules = best.rules;
+  rep.residual = best.residual;
+  if (best.atmosphere) return to_atmosphere(Status::atmosphere);
+  if (!best.finite) return to_atmosphere(Status::non_finite);
+  if (rep.status == Status::ok && best.residual > s.accuracy &&
+      (!(best.rules & detail::kRulesMovingState) || detail::acausal_at(eos, best.prim)))
+    rep.status = Status::inaccurate;
   return finish();
 }
 

@@ -17,8 +17,12 @@ enum class Status : std::uint8_t {
   not_converged,  // the master root finder hit max_iterations: its best estimate is used
   no_bracket,     // the master function did not change sign on its bracket: atmosphere set
   non_finite,     // the recovery produced NaN/inf (never seen; a safety net): atmosphere set
+  inaccurate,     // the result does not reproduce the conserved variables to Settings::accuracy
+                  // (a wrong root, e.g. where the table is acausal): the closest state found is kept
+  ambiguous,      // more than one state reproduces the conserved variables: the table is acausal
+                  // there (cs2 > 1); the first root found is kept
 };
-inline constexpr int kNumStatus = 6;
+inline constexpr int kNumStatus = 8;
 
 inline const char* to_string(Status s) {
   switch (s) {
@@ -28,6 +32,8 @@ inline const char* to_string(Status s) {
     case Status::not_converged: return "not_converged";
     case Status::no_bracket: return "no_bracket";
     case Status::non_finite: return "non_finite";
+    case Status::inaccurate: return "inaccurate";
+    case Status::ambiguous: return "ambiguous";
   }
   return "?";
 }
@@ -39,9 +45,12 @@ struct Report {
   int evaluations = 0;          // master-function evaluations (the steps plus the bracket ends)
   int aux_iterations = 0;       // Newton steps on the auxiliary function f_a (Kastaun only)
   std::uint64_t eos_calls = 0;  // EOS evaluations; 0 unless the EOS counts them
+  double residual = 0;          // conserved_residual of the result (residual.hpp); 0 where not checked
+  bool root_scan = false;       // the first root was wrong and a scan of the master function was needed
   bool fatal() const { return is_fatal(rules); }
   bool failed() const {
-    return status == Status::not_converged || status == Status::no_bracket || status == Status::non_finite;
+    return status == Status::not_converged || status == Status::no_bracket || status == Status::non_finite ||
+           status == Status::inaccurate || status == Status::ambiguous;
   }
 };
 
@@ -52,6 +61,7 @@ struct Diagnostics {
   std::array<std::uint64_t, kNumRules> rules{};  // cells in which rule i+1 fired
   std::uint64_t fatal_cells = 0;
   std::uint64_t iterations = 0, evaluations = 0, eos_calls = 0;
+  std::uint64_t root_scans = 0;  // recoveries saved by the root scan (counted besides their status)
   int max_iterations = 0;
 
   // A policy application outside the recovery (import, reconstruction, prolongation).
@@ -66,6 +76,7 @@ struct Diagnostics {
     iterations += r.iterations;
     evaluations += r.evaluations;
     eos_calls += r.eos_calls;
+    root_scans += r.root_scan;
     max_iterations = std::max(max_iterations, r.iterations);
   }
   void merge(const Diagnostics& o) {
@@ -76,6 +87,7 @@ struct Diagnostics {
     iterations += o.iterations;
     evaluations += o.evaluations;
     eos_calls += o.eos_calls;
+    root_scans += o.root_scans;
     max_iterations = std::max(max_iterations, o.max_iterations);
   }
   std::uint64_t count(Status s) const { return status[static_cast<int>(s)]; }

@@ -22,6 +22,9 @@ struct Settings {
   // Take the root's state at the secant root of Brent's final bracket (free: no EOS call; more
   // accurate by orders of magnitude). false: Brent's best point, as in the paper.
   bool secant_polish = true;
+  // Acceptance: a converged result whose conserved variables differ from the input by more than
+  // this (conserved_residual, residual.hpp) is a wrong root: root scan, else Status::inaccurate.
+  double accuracy = 1e-6;
   PolicySettings policy;
 };
 

@@ -39,6 +39,11 @@ struct TableData {
   std::vector<double> compo;
   // Per (iye, irho) cell: 1 if eps rises with T along all four corner columns.
   std::vector<std::uint8_t> monotone_cell;
+  // Per (iye, irho) cell, like monotone_cell: 1 if at any T a corner's cs2 exceeded 1 before the
+  // clamp (acausal: the conserved variables may not determine the state uniquely; the other states
+  // that share them lie at other T). Empty when none. (cs2 < 0, as in LS220's blend region near
+  // 1e11 g/cm^3, is tiny there and not flagged: it would put a root scan in every cell of a shell.)
+  std::vector<std::uint8_t> acausal_cell;
   Bounds bounds;
   CheckReport report;
 
@@ -72,6 +77,12 @@ struct RawTable {
 struct BuildOptions {
   bool clamp_cs2 = true;        // clamp cs2 into [0, 1] after counting the violations
   double axis_tolerance = 1e-6;  // allowed deviation from a uniform axis, in units of the spacing
+  // Largest fraction of grid points that may fail the thermodynamic checks (cs2 outside [0, 1],
+  // p not increasing with rho, eps not increasing with T) before loading stops with an error.
+  double max_inconsistent_fraction = 0.1;
+  // p may fall with rho (phase transitions, blend regions), but a fall by more than this factor
+  // between neighbouring rho points is a corrupted value: an error.
+  double max_pressure_drop = 10;
 };
 
 // Checks a raw table (throws TableError for errors, records warnings) and builds the internal

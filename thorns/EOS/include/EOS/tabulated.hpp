@@ -91,6 +91,17 @@ class Tabulated {
     return {v[kXa], v[kXh], v[kXn], v[kXp], v[kAbar], v[kZbar]};
   }
 
+  // True in a (rho, Ye) cell where cs2 exceeded 1 at some T (TableData::acausal_cell): there
+  // the conserved variables may not determine the state uniquely. No EOS call is counted.
+  bool acausal(double rho, double ye) const {
+    if (t_->acausal_cell.empty()) return false;
+    std::size_t ir, iy;
+    double f;
+    locate(t_->lrho, std::log(rho), ir, f);
+    locate(t_->ye, ye, iy, f);
+    return t_->acausal_cell[iy * t_->lrho.n + ir] != 0;
+  }
+
   // --- eps bounds along T and the eps -> T inversion ------------------------------------------
   EpsRange eps_range(double rho, double ye) const {
     const Column c = column(rho, ye);

@@ -15,6 +15,7 @@ namespace remnant::hydrobase {
 // The group ids the sweeps use, resolved once per scheduled call.
 struct MatterGroups {
   int cons = -1, prim = -1, metric = -1;
+  int budget = -1;  // HydroBase::mass_budget: the sweep adds the D it changes (atmosphere, policy); -1: none
   static MatterGroups of(const Context& ctx);
 };
 

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# remnant-c2p-bench: out-of-range options are errors naming the option (exit 2), and the fuzz mode
+# finds no NaN and no silently wrong recovery in 1e5 random states over the SFHo table.
+# Usage: bench_cli.sh <remnant-c2p-bench> <shared eos dir>
+set -uo pipefail
+exe=$1
+table=$2/SFHo_reduced_39r_39t_20y.h5
+if [ ! -f "$table" ]; then echo "REMNANT_TEST_SKIPPED: no table $table"; exit 0; fi
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+
+# bad <regex the message must match> -- options...
+bad() {
+  local regex=$1
+  shift 2
+  local out rc
+  out=$("$exe" "$table" --no-timing --out="$tmp/o" "$@" 2>&1)
+  rc=$?
+  if [ "$rc" != 2 ] || ! grep -Eq -- "$regex" <<<"$out"; then
+    echo "FAIL $*: exit $rc, output:"; echo "$out" | head -5; failed=$((failed + 1))
+  else
+    echo "ok   $* -> $(grep -E -- "$regex" <<<"$out" | head -1)"
+  fi
+}
+
+bad "option --ye=1.5: allowed 0 <= Ye <= 1" -- --ye=1.5
+bad "option --ye=0.9: outside the table .*allowed 0.01 .. 0.6" -- --ye=0.9
+bad "option --b2p=-1: allowed" -- --b2p=-1
+bad "option --tol=0: allowed 0 < tol" -- --tol=0
+bad "option --max-iter=-5: allowed integers 1 .. " -- --max-iter=-5
+bad "option --max-iter=2.5: allowed integers" -- --max-iter=2.5
+bad "option --W=0.5: allowed 1 <= W" -- --W=0.5
+bad "option --W=nan: not a finite number" -- --W=nan
+bad "option --n-rho=0: allowed integers 1 .. " -- --n-rho=0
+bad "option --rho=-3: allowed rho > 0" -- --rho=-3
+bad "option --T=100000: outside the table .*allowed 0.1 .. 131" -- --T=1e5
+bad "option --log-b2p=5:1:3: LO must not exceed HI" -- --log-b2p=5:1:3
+bad "option --seed=-1: allowed integers 0 .. " -- --seed=-1
+bad "option --fuzz=0: allowed integers 1 .. " -- --fuzz=0
+bad "option --accuracy=0: allowed 0 < accuracy < 1" -- --accuracy=0
+bad "option --rho-max=0: allowed rho > 0" -- --rho-max=0
+
+# 1e5 random states, both methods: 0 NaN and 0 silently wrong (the tool exits 3 otherwise).
+start=$(date +%s.%N)
+out=$("$exe" "$table" --fuzz=100000 --no-timing --out="$tmp/fuzz" 2>&1)
+rc=$?
+echo "$out" | grep -E "^(plane|fuzz)"
+echo "fuzz took $(awk -v a="$start" -v b="$(date +%s.%N)" 'BEGIN{printf "%.2f", b - a}') s"
+if [ "$rc" != 0 ]; then echo "FAIL fuzz: exit $rc"; echo "$out" | tail -5; failed=$((failed + 1)); fi
+# Columns of summary.tsv: silently_wrong (12), nan (14); one row per method.
+rows=$(awk -F'\t' '$1 == "fuzz" && $3 == 100000 && $12 == 0 && $14 == 0' "$tmp/fuzz/summary.tsv" | wc -l)
+if [ "$rows" != 2 ]; then echo "FAIL fuzz summary:"; cat "$tmp/fuzz/summary.tsv"; failed=$((failed + 1)); fi
+
+[ $failed = 0 ] && echo "all passed" || { echo "$failed failed"; exit 1; }
