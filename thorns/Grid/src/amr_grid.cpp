@@ -5,6 +5,7 @@
 
 #include "boundary_map.hpp"
 #include "config.hpp"
+#include "face_vector.hpp"
 #include "flux_correction.hpp"
 #include "forest.hpp"
 #include "ghost_exchange.hpp"
@@ -24,6 +25,7 @@ AmrGrid::AmrGrid(const GridConfig& config, const VariableRegistry& vars, MPI_Com
   MPI_Comm_rank(comm, &rank_);
   MPI_Comm_size(comm, &nranks_);
   MPI_Comm_dup(comm, &exchange_comm_);
+  face_vectors_ = find_face_vectors(vars, config_.dimension);
   maps_ = std::make_unique<BoundaryMaps>(config_);
   geometry_ = std::make_unique<LevelGeometry>(config_, config_.max_level);
   if (!config_.refine_variable.empty()) {
@@ -249,7 +251,8 @@ bool AmrGrid::move_to(std::vector<BlockKey> leaves) {
   if (const std::string why = balance_violation(config_, *next, *maps_); !why.empty())
     throw RunError("Grid: the new mesh is not 2:1 balanced (internal error): " + why);
   auto make = [this](std::int64_t gid, const BlockKey& key) { return make_block(gid, key); };
-  auto blocks = migrate_blocks(*forest_, block_ptrs_, *next, make, make, *vars_, *geometry_, rank_, exchange_comm_);
+  auto blocks = migrate_blocks(*forest_, block_ptrs_, *next, make, make, *vars_, *geometry_, face_vectors_, rank_,
+                               exchange_comm_);
   install(std::move(next), std::move(blocks));
   return true;
 }

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "face_prolongation.hpp"
 #include "ghost_plan.hpp"
 #include "remnant/error.hpp"
 #include "transfer.hpp"
@@ -60,7 +61,9 @@ Range origin_points(const Forest& f, const BlockKey& k) {
 std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std::span<Block* const> old_blocks,
                                                    const Forest& new_forest, const BlockFactory& make_new,
                                                    const BlockFactory& make_scratch, const VariableRegistry& vars,
-                                                   const LevelGeometry& geometry, int rank, MPI_Comm comm) {
+                                                   const LevelGeometry& geometry, std::span<const FaceVector> face_vectors,
+                                                   int rank, MPI_Comm comm) {
+  const std::vector<int> member = face_vector_membership({face_vectors.begin(), face_vectors.end()}, vars.size());
   const std::int64_t old_first = old_forest.first_gid(rank), old_count = old_forest.block_count(rank);
   const std::int64_t new_first = new_forest.first_gid(rank), new_count = new_forest.block_count(rank);
   auto old_mine = [&](std::int64_t g) { return g >= old_first && g < old_first + old_count; };
@@ -134,6 +137,12 @@ std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std
       if (o.kind == Source::same) {
         Block& s = old_block(o.old_gids[0]);
         std::memcpy(nb->data(v), s.data(v), s.size(v) * sizeof(double));
+        continue;
+      }
+      if (const int fv = member[static_cast<std::size_t>(v)]; fv >= 0 && o.kind == Source::parent) {
+        // The whole vector at once, when its first group comes up.
+        const FaceVector& vec = face_vectors[static_cast<std::size_t>(fv)];
+        if (vec.group[0] == v) prolong_face_vector(old_block(o.old_gids[0]), *nb, vec, new_forest.dimension());
         continue;
       }
       const auto stagger = effective_stagger(spec.centering, new_forest.dimension());

@@ -22,6 +22,7 @@ class BoundaryMaps;
 class LevelGeometry;
 class GhostExchange;
 class FluxCorrection;
+struct FaceVector;
 
 class AmrGrid final : public GridDriver {
  public:
@@ -88,6 +89,7 @@ class AmrGrid final : public GridDriver {
   int refine_group_ = -1, refine_comp_ = 0;
   double min_spacing_ = 0;
   std::vector<int> last_wishes_;
+  std::vector<FaceVector> face_vectors_;  // divergence-preserving face groups
 };
 
 }  // namespace remnant::grid

@@ -1,0 +1,186 @@
+#include "stagger_test_util.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace remnant::grid::test {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+std::uint64_t mix(std::uint64_t h) {
+  h ^= h >> 33;
+  h *= 0xff51afd7ed558ccdull;
+  h ^= h >> 33;
+  h *= 0xc4ceb9fe1a85ec53ull;
+  return h ^ (h >> 33);
+}
+
+// A reproducible number in [-1, 1] for an edge along `a` at finest-level index q.
+double random_edge(std::uint64_t seed, int a, std::array<std::int64_t, 3> q) {
+  std::uint64_t h = mix(seed + 0x9E3779B97F4A7C15ull * static_cast<std::uint64_t>(a + 1));
+  for (auto v : q) h = mix(h ^ static_cast<std::uint64_t>(v + 1000003));
+  return static_cast<double>(h >> 11) * (2.0 / 9007199254740992.0) - 1.0;
+}
+
+struct Potential {
+  const GridConfig& c;
+  int finest;
+  std::uint64_t seed;
+  std::array<std::int64_t, 3> cells_finest{};  // finest-level cells per direction
+
+  // Line integral along the finest edge along a from vertex q (q_a: the cell index along a).
+  double finest_edge(int a, std::array<std::int64_t, 3> q) const {
+    const int dim = c.dimension;
+    if (dim == 2 && a < 2) return 0.0;  // 2D: only the potential along the unused direction
+    for (int e = 0; e < dim; ++e)       // periodic directions wrap
+      if (c.boundary_lower[static_cast<std::size_t>(e)] == Boundary::periodic)
+        q[static_cast<std::size_t>(e)] = ((q[static_cast<std::size_t>(e)] % cells_finest[static_cast<std::size_t>(e)]) +
+                                          cells_finest[static_cast<std::size_t>(e)]) % cells_finest[static_cast<std::size_t>(e)];
+    if (c.coordinates == CoordinateSystem::cylindrical && q[0] == 0) {
+      if (a == 2) return 0.0;  // a circle of radius 0
+      if (a == 1) q[2] = 0;    // one value along the axis whatever phi
+    }
+    if (c.coordinates == CoordinateSystem::spherical) {
+      if (q[0] == 0 && a != 0) return 0.0;  // the origin
+      const bool axis = dim >= 2 && (q[1] == 0 || q[1] == cells_finest[1]);
+      if (axis && a == 2) return 0.0;
+      if (axis && a == 0) q[2] = 0;
+    }
+    return random_edge(seed, a, q);
+  }
+
+  // Line integral along the level-l edge along a from vertex p: the sum of its finest edges.
+  double edge(int level, int a, const std::array<std::int64_t, 3>& p) const {
+    const std::int64_t r = std::int64_t{1} << (finest - level);
+    std::array<std::int64_t, 3> q{};
+    for (int e = 0; e < 3; ++e) q[static_cast<std::size_t>(e)] = e < c.dimension ? p[static_cast<std::size_t>(e)] * r : p[static_cast<std::size_t>(e)];
+    if (a >= c.dimension) return finest_edge(a, q);
+    double s = 0;
+    for (std::int64_t m = 0; m < r; ++m) {
+      auto qm = q;
+      qm[static_cast<std::size_t>(a)] += m;
+      s += finest_edge(a, qm);
+    }
+    return s;
+  }
+
+  // Circulation around the face normal to d whose lowest vertex is p (level l).
+  double flux(int level, int d, const std::array<std::int64_t, 3>& p) const {
+    const int a = (d + 1) % 3, b = (d + 2) % 3;
+    auto plus = [&](int e) {
+      auto q = p;
+      q[static_cast<std::size_t>(e)] += 1;
+      return q;
+    };
+    return edge(level, a, p) + edge(level, b, plus(a)) - edge(level, a, plus(b)) - edge(level, b, p);
+  }
+};
+
+}  // namespace
+
+FaceField make_face_field() {
+  FaceField f;
+  const Centering cs[3] = {Centering::face_x, Centering::face_y, Centering::face_z};
+  const char* names[3] = {"Bx", "By", "Bz"};
+  for (int d = 0; d < 3; ++d) {
+    VariableGroupSpec g;
+    g.thorn = "Test";
+    g.name = names[d];
+    g.centering = cs[d];
+    g.components = expand_tensor(TensorKind::scalar, names[d]);
+    g.role = VariableRole::evolved;
+    g.rhs = std::string(names[d]) + "_rhs";
+    g.prolongation = "divergence_preserving";
+    f.group[d] = f.vars.add(std::move(g));
+  }
+  return f;
+}
+
+GridConfig stagger_config(CoordinateSystem coords, int dim) {
+  GridConfig c;
+  c.coordinates = coords;
+  c.dimension = dim;
+  c.ncells = {16, 16, 16};
+  c.block_size = {8, 8, 8};
+  c.ghost_zones = 2;
+  c.max_level = 2;
+  switch (coords) {
+    case CoordinateSystem::cartesian:
+      c.xmin = {-1, -1, -1};
+      c.xmax = {1, 1, 1};
+      break;
+    case CoordinateSystem::cylindrical:
+      c.xmin = {0, -1, 0};
+      c.xmax = {1, 1, 2 * kPi};
+      c.boundary_lower = {Boundary::axis, Boundary::outflow, Boundary::periodic};
+      c.boundary_upper = {Boundary::outflow, Boundary::outflow, Boundary::periodic};
+      break;
+    case CoordinateSystem::spherical:
+      c.xmin = {0, 0, 0};
+      c.xmax = {1, kPi, 2 * kPi};
+      c.boundary_lower = {Boundary::origin, Boundary::axis, Boundary::periodic};
+      c.boundary_upper = {Boundary::outflow, Boundary::axis, Boundary::periodic};
+      break;
+  }
+  return c;
+}
+
+void fill_curl_of_random_potential(AmrGrid& grid, const FaceField& f, int finest, std::uint64_t seed) {
+  const GridConfig& c = grid.config();
+  Potential pot{c, finest, seed, {}};
+  for (std::size_t d = 0; d < 3; ++d) pot.cells_finest[d] = static_cast<int>(d) < c.dimension ? c.ncells[d] << finest : 1;
+  for (Block* b : grid.local_blocks())
+    for (int d = 0; d < c.dimension; ++d) {
+      Field B = b->field(f.group[d], 0);
+      const int top[3] = {b->n[0] + (d == 0), b->n[1] + (d == 1), b->n[2] + (d == 2 && c.dimension == 3)};
+      for (int k = 0; k < top[2]; ++k)
+        for (int j = 0; j < top[1]; ++j)
+          for (int i = 0; i < top[0]; ++i) {
+            const std::array<std::int64_t, 3> p{b->index[0] * b->n[0] + i, b->index[1] * b->n[1] + j,
+                                                b->index[2] * b->n[2] + k};
+            const double area = b->face_area(d, i, j, k);
+            B(i, j, k) = area > 0 ? pot.flux(b->level, d, p) / area : 0.0;
+          }
+    }
+}
+
+double cell_outflow(Block& b, const FaceField& f, int i, int j, int k, double* magnitude) {
+  double s = 0, m = 0;
+  const int dim = b.n[2] > 1 || b.ng[2] > 0 ? 3 : 2;
+  for (int d = 0; d < dim; ++d) {
+    const Field B = b.field(f.group[d], 0);
+    const int ip = i + (d == 0), jp = j + (d == 1), kp = k + (d == 2);
+    const double up = b.face_area(d, ip, jp, kp) * B(ip, jp, kp), lo = b.face_area(d, i, j, k) * B(i, j, k);
+    s += up - lo;
+    m += std::abs(up) + std::abs(lo);
+  }
+  if (magnitude) *magnitude = m;
+  return s;
+}
+
+DivergenceStats divergence_stats(AmrGrid& grid, const FaceField& f) {
+  DivergenceStats st;
+  double bmax = 0, div_dx = 0;
+  for (Block* b : grid.local_blocks()) {
+    for (int d = 0; d < grid.dimension(); ++d) {
+      const Field B = b->field(f.group[d], 0);
+      for (int k = 0; k < b->n[2] + (d == 2); ++k)
+        for (int j = 0; j < b->n[1] + (d == 1); ++j)
+          for (int i = 0; i < b->n[0] + (d == 0); ++i)
+            if (b->face_area(d, i, j, k) > 0) bmax = std::max(bmax, std::abs(B(i, j, k)));
+    }
+    for_interior(*b, [&](int i, int j, int k) {
+      double m = 0;
+      const double out = cell_outflow(*b, f, i, j, k, &m);
+      if (m > 0) st.relative = std::max(st.relative, std::abs(out) / m);
+      div_dx = std::max(div_dx, std::abs(out) / b->cell_volume(i, j, k) * b->dx[0]);
+    });
+  }
+  st.scaled = bmax > 0 ? div_dx / bmax : 0;
+  return st;
+}
+
+}  // namespace remnant::grid::test
