@@ -5,6 +5,7 @@
 
 #include "boundary_map.hpp"
 #include "config.hpp"
+#include "edge_correction.hpp"
 #include "face_vector.hpp"
 #include "flux_correction.hpp"
 #include "forest.hpp"
@@ -83,6 +84,7 @@ void AmrGrid::install(std::unique_ptr<Forest> forest, std::vector<std::unique_pt
   for (auto& b : blocks_) block_ptrs_.push_back(b.get());
   exchanges_.clear();
   flux_.reset();
+  edges_.clear();
   min_spacing_ = compute_min_spacing();
 }
 
@@ -188,6 +190,23 @@ void AmrGrid::correct_fluxes(std::span<const int> face_groups) {
   if (forest_->finest_level() == 0) return;
   if (!flux_) flux_ = std::make_unique<FluxCorrection>(*forest_, *maps_, block_ptrs_, rank_, exchange_comm_);
   flux_->run(*vars_, face_groups);
+}
+
+void AmrGrid::correct_edges(std::span<const int> edge_groups) {
+  std::map<std::array<int, 3>, std::vector<int>> by_stagger;
+  for (int g : edge_groups) {
+    const auto c = vars_->group(g).centering;
+    if (c != Centering::edge_x && c != Centering::edge_y && c != Centering::edge_z)
+      throw RunError("Grid::correct_edges: group '" + vars_->group(g).full_name() + "' is " + to_string(c) +
+                     "-centred; EMFs live on edges (edge_x, edge_y or edge_z)");
+    by_stagger[effective_stagger(c, config_.dimension)].push_back(g);
+  }
+  if (forest_->finest_level() == 0) return;
+  for (const auto& [stagger, gs] : by_stagger) {
+    auto& e = edges_[stagger];
+    if (!e) e = std::make_unique<EdgeCorrection>(*forest_, *maps_, block_ptrs_, rank_, exchange_comm_, stagger);
+    e->run(*vars_, gs);
+  }
 }
 
 void AmrGrid::add_refinement_criterion(const std::string& name, RefinementCriterion fn) {
