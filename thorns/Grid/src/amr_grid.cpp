@@ -270,7 +270,7 @@ bool AmrGrid::move_to(std::vector<BlockKey> leaves) {
   if (const std::string why = balance_violation(config_, *next, *maps_); !why.empty())
     throw RunError("Grid: the new mesh is not 2:1 balanced (internal error): " + why);
   auto make = [this](std::int64_t gid, const BlockKey& key) { return make_block(gid, key); };
-  auto blocks = migrate_blocks(*forest_, block_ptrs_, *next, make, make, *vars_, *geometry_, face_vectors_, rank_,
+  auto blocks = migrate_blocks(*forest_, block_ptrs_, *next, make, make, *vars_, *geometry_, *maps_, face_vectors_, rank_,
                                exchange_comm_);
   install(std::move(next), std::move(blocks));
   return true;

@@ -132,7 +132,8 @@ struct Prolongation {
 
 }  // namespace
 
-void prolong_face_vector(Block& parent, Block& child, const FaceVector& vec, int dimension) {
+void prolong_face_vector(Block& parent, Block& child, const FaceVector& vec, int dimension,
+                         std::span<const KeptFace> kept) {
   Prolongation p{parent, child, dimension};
   for (int d = 0; d < dimension; ++d) {
     const auto ud = static_cast<std::size_t>(d);
@@ -155,6 +156,22 @@ void prolong_face_vector(Block& parent, Block& child, const FaceVector& vec, int
       for (int k = lo[2]; k < top[2]; ++k)
         for (int j = lo[1]; j < top[1]; ++j)
           for (int i = lo[0]; i < top[0]; ++i) p.face(d, {i, j, k});
+    }
+    for (const KeptFace& kf : kept) {
+      // The whole face plane of the child, from the neighbour's opposite face.
+      const auto ud = static_cast<std::size_t>(kf.direction);
+      const Field mine = p.fine[ud];
+      const Field theirs = kf.neighbour->field(vec.group[ud], comp);
+      Index n{child.n[0], child.n[1], child.n[2]};
+      n[ud] = 1;
+      for (int k = 0; k < n[2]; ++k)
+        for (int j = 0; j < n[1]; ++j)
+          for (int i = 0; i < n[0]; ++i) {
+            Index a{i, j, k}, b{i, j, k};
+            a[ud] = kf.upper ? child.n[ud] : 0;
+            b[ud] = kf.upper ? 0 : kf.neighbour->n[ud];
+            at(mine, a) = at(theirs, b);
+          }
     }
     for (int k = lo[2]; k < hi[2]; ++k)
       for (int j = lo[1]; j < hi[1]; ++j)

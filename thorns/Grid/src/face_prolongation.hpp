@@ -11,13 +11,26 @@
 //     (a square or a cube), diagonal in the Walsh functions: no matrix, no division by zero.
 // In 2D the correction is the one free constant per coarse cell of Toth & Roe; in 3D it also
 // fixes the cross terms.
+#include <span>
+
 #include "face_vector.hpp"
 #include "remnant/grid.hpp"
 
 namespace remnant::grid {
 
+// A block face of the child that a same-level block of the old mesh already has: the child takes
+// that block's copy of the normal component (so that both copies agree), and its interior faces
+// follow from it.
+struct KeptFace {
+  int direction = 0;
+  bool upper = false;       // the child's upper face in `direction` (the neighbour's lower face)
+  Block* neighbour = nullptr;
+};
+
 // Fills every interior face (the child's boundary faces included) of `vec` in `child` from
-// `parent`, the block one level coarser that contains it, whose ghosts are current.
-void prolong_face_vector(Block& parent, Block& child, const FaceVector& vec, int dimension);
+// `parent`, the block one level coarser that contains it, whose ghosts are current, and from the
+// kept same-level neighbours.
+void prolong_face_vector(Block& parent, Block& child, const FaceVector& vec, int dimension,
+                         std::span<const KeptFace> kept = {});
 
 }  // namespace remnant::grid

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
+#include <tuple>
 
 namespace remnant::grid::test {
 
@@ -181,6 +183,29 @@ DivergenceStats divergence_stats(AmrGrid& grid, const FaceField& f) {
   }
   st.scaled = bmax > 0 ? div_dx / bmax : 0;
   return st;
+}
+
+double shared_face_mismatch(AmrGrid& grid, const FaceField& f) {
+  std::map<std::tuple<int, std::int64_t, std::int64_t, std::int64_t>, Block*> at;
+  for (Block* b : grid.local_blocks()) at[{b->level, b->index[0], b->index[1], b->index[2]}] = b;
+  double worst = 0, bmax = 0;
+  for (Block* b : grid.local_blocks())
+    for (int d = 0; d < grid.dimension(); ++d) {
+      const Field B = b->field(f.group[d], 0);
+      for_interior(*b, [&](int i, int j, int k) { bmax = std::max(bmax, std::abs(B(i, j, k))); });
+      std::array<std::int64_t, 3> K = b->index;
+      K[static_cast<std::size_t>(d)] += 1;
+      auto it = at.find({b->level, K[0], K[1], K[2]});
+      if (it == at.end()) continue;
+      const Field N = it->second->field(f.group[d], 0);
+      for_interior(*b, [&](int i, int j, int k) {
+        int p[3] = {i, j, k}, q[3] = {i, j, k};
+        if (p[d] != 0) return;
+        p[d] = b->n[static_cast<std::size_t>(d)];
+        worst = std::max(worst, std::abs(B(p[0], p[1], p[2]) - N(q[0], q[1], q[2])));
+      });
+    }
+  return bmax > 0 ? worst / bmax : 0;
 }
 
 }  // namespace remnant::grid::test

@@ -34,4 +34,8 @@ struct DivergenceStats {
 };
 DivergenceStats divergence_stats(AmrGrid& grid, const FaceField& f);
 
+// The largest difference between the two copies of a face shared by same-level local blocks (not
+// across periodic faces), relative to max |B|.
+double shared_face_mismatch(AmrGrid& grid, const FaceField& f);
+
 }  // namespace remnant::grid::test

@@ -85,6 +85,38 @@ TEST_P(StaggeredRegrid, DivergenceStaysAtRoundOff) {
   EXPECT_LT(worst, 1e-13 * scale);
 }
 
+// A refined region that grows next to fine blocks the old mesh had: the new blocks take the kept
+// blocks' copies of the shared faces (the fine data differ from what prolongation would give),
+// and every cell keeps a round-off divergence.
+TEST_P(StaggeredRegrid, GrowingRegionTakesTheKeptFineFaces) {
+  const auto [coords, dim] = GetParam();
+  const FaceField f = make_face_field();
+  AmrGrid grid(stagger_config(coords, dim), f.vars, MPI_COMM_SELF);
+  const auto base = grid.all_blocks();
+  ASSERT_TRUE(grid.set_leaves(refine_inner_slab(base, 0, dim)));
+  // Fine data of their own (a random potential resolved on level 1), consistent across levels.
+  fill_curl_of_random_potential(grid, f, 1, 4242);
+  EXPECT_EQ(shared_face_mismatch(grid, f), 0.0);
+  // Refine the next slab of level-0 blocks: new level-1 blocks beside kept ones.
+  std::vector<BlockKey> grown;
+  for (const BlockKey& k : grid.all_blocks()) {
+    if (k.level != 0 || k.index[0] != 1) {
+      grown.push_back(k);
+      continue;
+    }
+    const int cz = dim >= 3 ? 2 : 1;
+    for (int c2 = 0; c2 < cz; ++c2)
+      for (int c1 = 0; c1 < 2; ++c1)
+        for (int c0 = 0; c0 < 2; ++c0)
+          grown.push_back({1, {2 * k.index[0] + c0, 2 * k.index[1] + c1, dim >= 3 ? 2 * k.index[2] + c2 : 0}});
+  }
+  ASSERT_TRUE(grid.set_leaves(grown));
+  EXPECT_EQ(shared_face_mismatch(grid, f), 0.0);
+  const DivergenceStats s = divergence_stats(grid, f);
+  EXPECT_LE(s.scaled, 1e-13);
+  EXPECT_LE(s.relative, 1e-13);
+}
+
 INSTANTIATE_TEST_SUITE_P(Coordinates, StaggeredRegrid,
                          ::testing::Combine(::testing::Values(CoordinateSystem::cartesian, CoordinateSystem::cylindrical,
                                                               CoordinateSystem::spherical),
