@@ -17,13 +17,18 @@ double upwind(double am, double a, double b, double bp, double h, double v) {
 }
 }  // namespace
 
-double potential(const Loop& loop, double t, double x, double y) {
-  double cx = loop.centre[0] + loop.velocity[0] * t, cy = loop.centre[1] + loop.velocity[1] * t;
+double distance_to_centre(const Loop& loop, double t, double x, double y) {
+  const double cx = loop.centre[0] + loop.velocity[0] * t, cy = loop.centre[1] + loop.velocity[1] * t;
   // The nearest periodic image of the centre.
   double dx = x - cx, dy = y - cy;
   dx -= loop.period[0] * std::round(dx / loop.period[0]);
   dy -= loop.period[1] * std::round(dy / loop.period[1]);
-  const double s = (dx * dx + dy * dy) / (loop.radius * loop.radius);
+  return std::hypot(dx, dy);
+}
+
+double potential(const Loop& loop, double t, double x, double y) {
+  const double r = distance_to_centre(loop, t, x, y);
+  const double s = r * r / (loop.radius * loop.radius);
   if (s >= 1) return 0.0;
   const double w = 1 - s;
   return loop.amplitude * w * w * w * w;

@@ -15,6 +15,8 @@ struct Loop {
   std::array<double, 2> period{2.0, 2.0};  // domain size (periodic images of the loop)
 };
 
+// Distance of (x, y) from the loop centre at time t (nearest periodic image).
+double distance_to_centre(const Loop& loop, double t, double x, double y);
 // The potential A_z at (x, y) and time t (the loop moved by v t, periodic images included).
 double potential(const Loop& loop, double t, double x, double y);
 // The exact magnetic energy of the loop, integral of |B|^2 / 2 = 4 pi A0^2 / 7.

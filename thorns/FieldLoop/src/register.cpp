@@ -30,6 +30,19 @@ void check_grid(Context& ctx) {
                      "FieldLoop runs on 2D Cartesian grids (Grid::coordinates = cartesian, Grid::dimension = 2)");
 }
 
+void register_criterion(Context& ctx) {
+  const double radius = ctx.param<double>("FieldLoop", "refine_radius");
+  if (radius <= 0) return;
+  Context* c = &ctx;
+  ctx.grid().add_refinement_criterion("FieldLoop::moving_loop", [c, radius](Block& b) {
+    const Loop l = loop_from(*c);
+    for (int j = 0; j < b.n[1]; ++j)
+      for (int i = 0; i < b.n[0]; ++i)
+        if (distance_to_centre(l, c->time(), b.x(0, i), b.x(1, j)) < radius) return 1;
+    return -1;
+  });
+}
+
 void initial(Context& ctx) {
   const Loop l = loop_from(ctx);
   const int bx = ctx.var("FieldLoop::Bx"), by = ctx.var("FieldLoop::By");
@@ -68,6 +81,7 @@ double max_inverse_dt(Context& ctx) {
 REMNANT_REGISTER_THORN(FieldLoop) {
   using namespace remnant::field_loop;
   reg.function("FieldLoop_CheckGrid", check_grid);
+  reg.function("FieldLoop_RegisterCriterion", register_criterion);
   reg.function("FieldLoop_Initial", initial);
   reg.function("FieldLoop_RHS", rhs);
   reg.function("FieldLoop_Analysis", analysis);

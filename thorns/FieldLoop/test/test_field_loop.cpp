@@ -23,6 +23,7 @@ struct LoopRun {
   double divergence = 0;    // max |div B| dx / max |B|
   double interface = 0;     // max over coarse/fine faces of |coarse flux - sum of fine fluxes| / max |flux|
   int finest = 0;
+  std::size_t blocks = 0;
 };
 
 // Every coarse face on a coarse/fine interface against its two fine faces (single rank, 2D,
@@ -73,7 +74,7 @@ double interface_mismatch(GridDriver& grid, int bx, int by) {
   return scale > 0 ? worst / scale : 0;
 }
 
-LoopRun run(int scale) {
+LoopRun run(int scale, const std::vector<std::string>& extra = {}) {
   static const ThornCatalog catalog(remnant_compiled_thorns());
   SimulationOptions o;
   o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/field_loop_2d.yaml";
@@ -83,6 +84,7 @@ LoopRun run(int scale) {
   const std::string n = std::to_string(32 * scale), b = std::to_string(8 * scale);
   o.overrides = {"Flesh::out_dir=" + out.string(), "FieldLoop::analysis_every=1", "IO::tsv_every=0",
                  "Grid::ncells=[" + n + "," + n + ",1]", "Grid::block_size=[" + b + "," + b + ",1]"};
+  o.overrides.insert(o.overrides.end(), extra.begin(), extra.end());
   Simulation sim(catalog, o, MPI_COMM_WORLD);
   sim.setup_output_and_grid();
   sim.run();
@@ -102,6 +104,7 @@ LoopRun run(int scale) {
     }
   }
   r.divergence = div_max * dx / bmax;
+  r.blocks = grid.all_blocks().size();
   r.interface = interface_mismatch(grid, sim.vars().find("FieldLoop::Bx"), sim.vars().find("FieldLoop::By"));
   std::filesystem::remove_all(out);
   return r;
@@ -124,4 +127,19 @@ TEST(FieldLoop, DivergenceAtRoundOffAndEnergyConvergesAtSecondOrder) {
   std::printf("field loop: energy convergence orders %.3f %.3f\n", p1, p2);
   EXPECT_GT(p2, 1.8);
   EXPECT_GT(p1, 1.5);
+}
+
+// A refined region that follows the loop (regrid every 4 iterations): new fine blocks are
+// prolonged divergence-free (taking the faces of kept fine neighbours), coarsened ones restricted
+// by area; div B and the coarse/fine flux agreement stay at round-off.
+TEST(FieldLoop, MovingRefinementKeepsTheDivergenceAtRoundOff) {
+  const LoopRun fixed = run(1);
+  const LoopRun moving = run(1, {"FieldLoop::refine_radius=0.45", "Grid::regrid_every=4"});
+  std::printf("field loop, moving refinement: energy error %.4e, max |div B| dx / max |B| %.2e, coarse/fine flux "
+              "mismatch %.2e, %zu blocks (static layout: %zu)\n", moving.energy_error, moving.divergence, moving.interface,
+              moving.blocks, fixed.blocks);
+  EXPECT_NE(moving.blocks, fixed.blocks) << "the refined region must have moved";
+  EXPECT_LE(moving.divergence, 1e-13);
+  EXPECT_LE(moving.interface, 1e-12);
+  EXPECT_LT(moving.energy_error, 1.1 * fixed.energy_error);
 }
