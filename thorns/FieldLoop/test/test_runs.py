@@ -4,6 +4,9 @@
   restart_np1 / restart_np2 / restart_1to2 / restart_2to1
       N+M iterations straight vs N, then recover for M on the same or another rank count: the TSV
       series of the magnetic energy and div B are bit-identical (raw faces in the checkpoint)
+  moving
+      a refined region following the loop (regrids): 1 rank, 2 ranks and a 1 -> 2 recovery give
+      bit-identical TSV series
   grid_output
       HDF5 volume output of Bx, By: each cell holds the mean of its two faces, taken from the raw
       faces of a checkpoint at the same iteration (bit for bit), marked "cell average of face_x"
@@ -40,6 +43,24 @@ def mode_restart(r, np1, np2):
     for n in a:
         assert a[n] == b[n], "%s differs between the straight and the recovered run" % n
     print("field loop restart %d -> %d ranks: %d TSV files bit-identical" % (np1, np2, len(a)))
+
+
+def mode_moving(r):
+    # Regrids every 4 iterations (new fine blocks prolonged, taking kept neighbours' faces, old ones
+    # restricted, blocks moving between ranks): 1 and 2 ranks give the same bits, and a recovery
+    # on 2 ranks from a 1-rank checkpoint continues them.
+    moving = ["FieldLoop::refine_radius=0.45", "Grid::regrid_every=4", "MoL::max_iterations=30"]
+    one, _ = r.run("np1", 1, moving)
+    two, _ = r.run("np2", 2, moving)
+    first, _ = r.run("restarted", 1, moving[:2] + ["MoL::max_iterations=22", "IO::checkpoint_every=10"])
+    _, p = r.run("restarted", 2, moving + ["IO::recover=auto"])
+    assert "recovered from" in p.stdout and "it0000000020" in p.stdout, p.stdout
+    a, b, c = tsv_text(one), tsv_text(two), tsv_text(first)
+    for n in a:
+        assert a[n] == b[n], "%s differs between 1 and 2 ranks" % n
+        assert a[n] == c[n], "%s differs after recovery on 2 ranks" % n
+    div = [float(l.split("\t")[2]) for l in a["FieldLoop-divB.divB.maximum.tsv"].splitlines() if not l.startswith("#")]
+    print("field loop with moving refinement: 1 rank, 2 ranks and 1 -> 2 recovery bit-identical; max div B %.2e" % max(div))
 
 
 def text(v):
@@ -85,7 +106,7 @@ def mode_grid_output(r):
 def main():
     modes = {"restart_np1": lambda r: mode_restart(r, 1, 1), "restart_np2": lambda r: mode_restart(r, 2, 2),
              "restart_1to2": lambda r: mode_restart(r, 1, 2), "restart_2to1": lambda r: mode_restart(r, 2, 1),
-             "grid_output": mode_grid_output}
+             "grid_output": mode_grid_output, "moving": mode_moving}
     remnant_runs.main(
         lambda a: remnant_runs.Runner(a, os.path.join(a.source_dir, "parfiles", "field_loop_2d.yaml"), BASE), modes)
 
