@@ -15,6 +15,7 @@
 """
 import glob
 import os
+import subprocess
 import sys
 
 import numpy as np
@@ -92,7 +93,10 @@ def mode_grid_output(r):
         assert text(g["data/FieldLoop-Bx.Bx"].attrs["centering"]) == "cell average of face_x", \
             g["data/FieldLoop-Bx.Bx"].attrs["centering"]
         assert text(c["groups/FieldLoop::By"].attrs["centering"]) == "face_y"
-    xmf = open(os.path.join(out, "grid-volume.it%08d.xmf" % 8)).read()
+    xmf_path = os.path.join(out, "grid-volume.it%08d.xmf" % 8)
+    rc = subprocess.run([sys.executable, os.path.join(r.a.source_dir, "utils", "check_xdmf"), xmf_path])
+    assert rc.returncode == 0, "check_xdmf failed on " + xmf_path
+    xmf = open(xmf_path).read()
     assert '<Information Name="centering" Value="cell average of face_x"/>' in xmf, xmf[:2000]
     assert '<Information Name="centering" Value="cell average of face_y"/>' in xmf
     # Edge-centred groups have no cell-average output: refused with the parameter named.
