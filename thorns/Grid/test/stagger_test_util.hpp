@@ -38,4 +38,18 @@ DivergenceStats divergence_stats(AmrGrid& grid, const FaceField& f);
 // across periodic faces), relative to max |B|.
 double shared_face_mismatch(AmrGrid& grid, const FaceField& f);
 
+// The face field and edge groups Ex, Ey, Ez (auxiliary) for constrained-transport tests.
+struct EdgeSetup {
+  FaceField f;
+  int edge[3] = {-1, -1, -1};
+  EdgeSetup();
+};
+
+// Sets the edges of the interior of every local block to a smooth EMF pattern that differs between
+// levels and, by a factor 1 + 1e-3 gid, between blocks (as ghosts near refinement boundaries make
+// them), zero on edges of zero length and single-valued along an axis; in 2D only along z.
+void fill_emf(AmrGrid& grid, const EdgeSetup& s);
+// Phi -= dt * (circulation of E around the face), line integrals = value * coordinate length.
+void ct_update(AmrGrid& grid, const EdgeSetup& s, double dt);
+
 }  // namespace remnant::grid::test

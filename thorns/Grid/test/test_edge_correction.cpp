@@ -17,23 +17,6 @@
 namespace remnant::grid::test {
 namespace {
 
-struct EdgeSetup {
-  FaceField f = make_face_field();
-  int edge[3] = {-1, -1, -1};
-  EdgeSetup() {
-    const Centering cs[3] = {Centering::edge_x, Centering::edge_y, Centering::edge_z};
-    const char* names[3] = {"Ex", "Ey", "Ez"};
-    for (int a = 0; a < 3; ++a) {
-      VariableGroupSpec g;
-      g.thorn = "Test";
-      g.name = names[a];
-      g.centering = cs[a];
-      g.components = expand_tensor(TensorKind::scalar, names[a]);
-      edge[a] = f.vars.add(std::move(g));
-    }
-  }
-};
-
 GridConfig two_level(CoordinateSystem coords, int dim) {
   GridConfig c = stagger_config(coords, dim);
   c.ncells = {32, 32, 32};
@@ -42,71 +25,6 @@ GridConfig two_level(CoordinateSystem coords, int dim) {
                         0.5 * (c.xmin[2] + c.xmax[2]) - 0.1};
   c.regions = {{RegionKind::box, RegionMode::at_least, 1, {lo[0], lo[0] + 0.05, lo[1], lo[1] + 0.2, lo[2], lo[2] + 0.2}}};
   return c;
-}
-
-// A covariant EMF pattern that differs between levels (as a scheme's EMFs do) and, by the factor
-// `variant`, between blocks, periodic in the third coordinate, zero along edges of zero length and
-// single-valued along an axis (no correction crosses an axis: a thorn must compute it so).
-double emf(CoordinateSystem coords, int level, int a, Point3 x, double variant) {
-  const bool at_axis = coords == CoordinateSystem::cylindrical ? x[0] == 0
-                     : coords == CoordinateSystem::spherical && (x[1] == 0 || std::abs(x[1] - std::numbers::pi) < 1e-12);
-  if (coords == CoordinateSystem::spherical && x[0] == 0 && a != 0) return 0.0;
-  if (at_axis && a == 2) return 0.0;
-  if (at_axis) x[2] = 0;
-  // Blocks' own variants, but one value along an axis (a thorn must compute it so: no correction
-  // crosses an axis).
-  return (1 + a) * std::sin(2.1 * x[0] + 0.3 * a) * std::cos(1.7 * x[1] - 0.2) * (1.2 + 0.3 * std::cos(x[2])) *
-         (1 + 0.1 * level * (1 + x[0] * x[1])) * (at_axis ? 1.0 : variant);
-}
-
-void fill_emf(AmrGrid& grid, const EdgeSetup& s) {
-  const int dim = grid.dimension();
-  for (Block* b : grid.local_blocks())
-    for (int a = 0; a < 3; ++a) {
-      const Field E = b->field(s.edge[a], 0);
-      const auto st = staggering(static_cast<Centering>(static_cast<int>(Centering::edge_x) + a));
-      int top[3];
-      for (int e = 0; e < 3; ++e) top[e] = b->n[static_cast<std::size_t>(e)] + (e < dim ? st[static_cast<std::size_t>(e)] : 0);
-      for (int k = 0; k < top[2]; ++k)
-        for (int j = 0; j < top[1]; ++j)
-          for (int i = 0; i < top[0]; ++i) {
-            const int p[3] = {i, j, k};
-            Point3 x{};
-            for (int e = 0; e < 3; ++e)
-              x[static_cast<std::size_t>(e)] = st[static_cast<std::size_t>(e)] ? b->face_coordinate(e, p[e]) : b->x(e, p[e]);
-            // 2D: the potential runs along the unused direction only.
-            // Each block's own variant (blocks near refinement boundaries see different ghosts).
-            E(i, j, k) = dim == 2 && a < 2 ? 0.0 : emf(grid.coordinates(), b->level, a, x, 1 + 1e-3 * static_cast<double>(b->gid));
-          }
-    }
-}
-
-// Phi -= dt * (circulation of E around the face), line integrals = value * coordinate length.
-void ct_update(AmrGrid& grid, const EdgeSetup& s, double dt) {
-  const int dim = grid.dimension();
-  for (Block* b : grid.local_blocks()) {
-    auto length = [&](int a) { return a < dim ? b->dx[static_cast<std::size_t>(a)] : 1.0; };
-    auto edge = [&](int a, int i, int j, int k) {
-      if (dim == 2 && a < 2) return 0.0;
-      return b->field(s.edge[a], 0)(i, j, k) * length(a);
-    };
-    for (int d = 0; d < dim; ++d) {
-      const int a = (d + 1) % 3, c = (d + 2) % 3;
-      const Field B = b->field(s.f.group[d], 0);
-      for (int k = 0; k < b->n[2] + (d == 2); ++k)
-        for (int j = 0; j < b->n[1] + (d == 1); ++j)
-          for (int i = 0; i < b->n[0] + (d == 0); ++i) {
-            auto step = [&](int e, int p[3]) { if (e < dim) p[e] += 1; };
-            int pa[3] = {i, j, k}, pc[3] = {i, j, k};
-            step(a, pa);
-            step(c, pc);
-            const double circ = edge(a, i, j, k) + edge(c, pa[0], pa[1], pa[2]) - edge(a, pc[0], pc[1], pc[2]) -
-                                edge(c, i, j, k);
-            const double area = b->face_area(d, i, j, k);
-            if (area > 0) B(i, j, k) = (area * B(i, j, k) - dt * circ) / area;
-          }
-    }
-  }
 }
 
 struct Result {
