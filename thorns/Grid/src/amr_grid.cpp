@@ -104,14 +104,14 @@ void AmrGrid::synchronize(std::span<const int> groups) {
   for (int g : groups) {
     const auto& spec = vars_->group(g);
     const auto c = spec.centering;
-    if (c != Centering::cell && c != Centering::face_x && c != Centering::face_y && c != Centering::face_z)
+    if (c == Centering::vertex)
       throw RunError("Grid: synchronising " + std::string(to_string(c)) + "-centred group '" + spec.full_name() +
-                     "' is not supported; cell- and face-centred groups are");
+                     "' is not supported; cell-, face- and edge-centred groups are");
     const auto stagger = effective_stagger(c, config_.dimension);
     for (int d = 0; d < config_.dimension; ++d)
       if (stagger[static_cast<std::size_t>(d)] && config_.max_level > 0 &&
           config_.block_size[static_cast<std::size_t>(d)] < 2 * config_.ghost_zones + 2)
-        throw RunError("Grid: synchronising face-centred group '" + spec.full_name() + "' on a refined mesh needs "
+        throw RunError("Grid: synchronising staggered group '" + spec.full_name() + "' on a refined mesh needs "
                        "Grid::block_size >= 2 * Grid::ghost_zones + 2 (its ghost faces reach one face further)");
     by_stagger[stagger].push_back(g);
   }
@@ -232,8 +232,7 @@ void AmrGrid::synchronize_all() {
   for (int g = 0; g < vars_->size(); ++g) {
     const auto& spec = vars_->group(g);
     const auto c = spec.centering;
-    if ((spec.role != VariableRole::auxiliary || g == refine_group_) &&
-        (c == Centering::cell || c == Centering::face_x || c == Centering::face_y || c == Centering::face_z))
+    if ((spec.role != VariableRole::auxiliary || g == refine_group_) && c != Centering::vertex)
       all_groups.push_back(g);
   }
   synchronize(all_groups);

@@ -25,11 +25,9 @@ std::vector<FaceVector> find_face_vectors(const VariableRegistry& vars, int dime
   for (const VariableGroupSpec& g : vars.groups()) {
     const int d = face_direction(g.centering);
     const bool evolved = g.role == VariableRole::evolved;
-    if (evolved && d < 0 && g.centering != Centering::cell)
-      throw InputError(g.where, "evolved group '" + g.full_name() + "' is " + to_string(g.centering) +
-                                    "-centred; the Grid evolves cell- and face-centred groups only (keep B on "
-                                    "faces with prolongation: divergence_preserving and the EMFs on edges as "
-                                    "auxiliary groups, see Grid::correct_edges)");
+    if (evolved && g.centering == Centering::vertex)
+      throw InputError(g.where, "evolved group '" + g.full_name() + "' is vertex-centred; the Grid evolves cell-, "
+                                    "face- and edge-centred groups only");
     if (g.prolongation != "divergence_preserving") {
       if (evolved && d >= 0 && d < dimension)
         throw InputError(g.where, "evolved face-centred group '" + g.full_name() +

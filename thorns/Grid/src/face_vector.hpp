@@ -20,8 +20,8 @@ struct FaceVector {
 // Collects the face vectors and checks the declarations. Throws InputError (at the group's
 // thorn.yaml line) for: divergence_preserving on a group that is not face-centred; a thorn whose
 // divergence-preserving groups do not give exactly one group per used direction with the same
-// components; an evolved face group in a used direction outside such a vector; an evolved edge- or
-// vertex-centred group (the Grid cannot evolve those: evolve faces, keep EMFs on edges).
+// components; an evolved face group in a used direction outside such a vector; an evolved
+// vertex-centred group (evolved edge groups, e.g. a vector potential, are prolonged bilinearly).
 std::vector<FaceVector> find_face_vectors(const VariableRegistry& vars, int dimension);
 
 // Per group: the index of the face vector it belongs to in a used direction, or -1.
