@@ -76,4 +76,6 @@ TEST(ThornSpec, SchemaErrorsNameFileAndLine) {
   expect_error<InputError>([] { parse_thorn_spec("thorn: A\nschedule:\n  - function: f\n    in: evol\n    reads: [u(ghosts)]\n    description: d\n", "a.yaml"); },
                            {"a.yaml:5:13", "region 'ghosts'"});
   expect_error<InputError>([] { parse_thorn_spec("thorn: A\nparameters: [\n", "a.yaml"); }, {"a.yaml:", "YAML syntax error"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - group: u\n    centering: face_q\n    tensor: [scalar u]\n", "a.yaml"); },
+                           {"a.yaml:4:", "centering 'face_q' is not one of: cell, face_x, face_y, face_z, edge_x"});
 }
