@@ -315,6 +315,13 @@ ThornSpec parse_thorn_spec(const std::string& text, const std::string& path) {
     return n && n.IsSequence() ? n : YAML::Node(YAML::NodeType::Sequence);
   };
   for (const auto& v : seq("variables")) t.variables.push_back(rd.variable(v, t.name));
+  // Evolving staggered data needs a grid that can prolong and exchange it: the capability
+  // `staggered_grid` (provided by Grid), checked at configure time and at start-up.
+  const bool staggered_ok = std::find(t.requirements.begin(), t.requirements.end(), "staggered_grid") != t.requirements.end();
+  for (const auto& g : t.variables)
+    if (g.role == VariableRole::evolved && g.centering != Centering::cell && !staggered_ok)
+      throw InputError(g.where, "evolved " + std::string(to_string(g.centering)) + "-centred group '" + g.name +
+                                    "' needs a grid for staggered variables: add 'staggered_grid' to 'requires'");
   std::set<std::string> names;
   for (const auto& p : seq("parameters")) {
     t.parameters.push_back(rd.parameter(p, t.name));

@@ -76,4 +76,9 @@ TEST(ThornSpec, SchemaErrorsNameFileAndLine) {
   expect_error<InputError>([] { parse_thorn_spec("thorn: A\nschedule:\n  - function: f\n    in: evol\n    reads: [u(ghosts)]\n    description: d\n", "a.yaml"); },
                            {"a.yaml:5:13", "region 'ghosts'"});
   expect_error<InputError>([] { parse_thorn_spec("thorn: A\nparameters: [\n", "a.yaml"); }, {"a.yaml:", "YAML syntax error"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - group: u\n    centering: face_q\n    tensor: [scalar u]\n", "a.yaml"); },
+                           {"a.yaml:4:", "centering 'face_q' is not one of: cell, face_x, face_y, face_z, edge_x"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - group: B\n    centering: face_x\n    tensor: [scalar B]\n    role: evolved\n    rhs: B_rhs\n", "a.yaml"); },
+                           {"a.yaml:3:", "evolved face_x-centred group 'B' needs a grid for staggered variables", "staggered_grid"});
+  EXPECT_NO_THROW(parse_thorn_spec("thorn: A\nrequires: [staggered_grid]\nvariables:\n  - group: B\n    centering: face_x\n    tensor: [scalar B]\n    role: evolved\n    rhs: B_rhs\n", "a.yaml"));
 }

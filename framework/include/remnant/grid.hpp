@@ -137,6 +137,14 @@ class GridDriver {
   // of a coarse-fine interface agree and conservation holds to round-off. Collective.
   virtual void correct_fluxes(std::span<const int> face_groups) { (void)face_groups; }
 
+  // Constrained transport, the analogue of correct_fluxes. `edge_groups` (edge_x, edge_y, edge_z)
+  // hold EMFs as covariant components (an edge's line integral is value times coordinate length)
+  // on the edges of the interior. Every coarse copy of an edge that is also an edge of finer blocks
+  // takes the mean of the two fine edges along it, so that a CT update keeps the coarse flux
+  // through a coarse/fine interface equal to the sum of the fine ones (div B at round-off), and
+  // coarse blocks sharing such an edge update their shared faces alike. Collective.
+  virtual void correct_edges(std::span<const int> edge_groups) { (void)edge_groups; }
+
   // Adaptive refinement: a criterion returns, for one local block whose ghosts of the variables it
   // reads the thorn has synchronised, +1 (refine), 0 (keep) or -1 (may coarsen; a family of
   // 2^d blocks coarsens only when all agree). Evaluated at every regrid; several criteria combine

@@ -5,6 +5,8 @@
 
 #include "boundary_map.hpp"
 #include "config.hpp"
+#include "edge_correction.hpp"
+#include "face_vector.hpp"
 #include "flux_correction.hpp"
 #include "forest.hpp"
 #include "ghost_exchange.hpp"
@@ -25,6 +27,7 @@ AmrGrid::AmrGrid(const GridConfig& config, const VariableRegistry& vars, MPI_Com
   MPI_Comm_rank(comm, &rank_);
   MPI_Comm_size(comm, &nranks_);
   MPI_Comm_dup(comm, &exchange_comm_);
+  face_vectors_ = find_face_vectors(vars, config_.dimension);
   maps_ = std::make_unique<BoundaryMaps>(config_);
   geometry_ = std::make_unique<LevelGeometry>(config_, config_.max_level);
   if (!config_.refine_variable.empty()) {
@@ -85,6 +88,7 @@ void AmrGrid::install(std::unique_ptr<Forest> forest, std::vector<std::unique_pt
   for (auto& b : blocks_) block_ptrs_.push_back(b.get());
   exchanges_.clear();
   flux_.reset();
+  edges_.clear();
   min_spacing_ = compute_min_spacing();
 }
 
@@ -104,14 +108,14 @@ void AmrGrid::synchronize(std::span<const int> groups) {
   for (int g : groups) {
     const auto& spec = vars_->group(g);
     const auto c = spec.centering;
-    if (c != Centering::cell && c != Centering::face_x && c != Centering::face_y && c != Centering::face_z)
+    if (c == Centering::vertex)
       throw RunError("Grid: synchronising " + std::string(to_string(c)) + "-centred group '" + spec.full_name() +
-                     "' is not supported; cell- and face-centred groups are");
+                     "' is not supported; cell-, face- and edge-centred groups are");
     const auto stagger = effective_stagger(c, config_.dimension);
     for (int d = 0; d < config_.dimension; ++d)
       if (stagger[static_cast<std::size_t>(d)] && config_.max_level > 0 &&
           config_.block_size[static_cast<std::size_t>(d)] < 2 * config_.ghost_zones + 2)
-        throw RunError("Grid: synchronising face-centred group '" + spec.full_name() + "' on a refined mesh needs "
+        throw RunError("Grid: synchronising staggered group '" + spec.full_name() + "' on a refined mesh needs "
                        "Grid::block_size >= 2 * Grid::ghost_zones + 2 (its ghost faces reach one face further)");
     by_stagger[stagger].push_back(g);
   }
@@ -192,6 +196,23 @@ void AmrGrid::correct_fluxes(std::span<const int> face_groups) {
   flux_->run(*vars_, face_groups);
 }
 
+void AmrGrid::correct_edges(std::span<const int> edge_groups) {
+  std::map<std::array<int, 3>, std::vector<int>> by_stagger;
+  for (int g : edge_groups) {
+    const auto c = vars_->group(g).centering;
+    if (c != Centering::edge_x && c != Centering::edge_y && c != Centering::edge_z)
+      throw RunError("Grid::correct_edges: group '" + vars_->group(g).full_name() + "' is " + to_string(c) +
+                     "-centred; EMFs live on edges (edge_x, edge_y or edge_z)");
+    by_stagger[effective_stagger(c, config_.dimension)].push_back(g);
+  }
+  if (forest_->finest_level() == 0) return;
+  for (const auto& [stagger, gs] : by_stagger) {
+    auto& e = edges_[stagger];
+    if (!e) e = std::make_unique<EdgeCorrection>(*forest_, *maps_, block_ptrs_, rank_, exchange_comm_, stagger);
+    e->run(*vars_, gs);
+  }
+}
+
 void AmrGrid::add_refinement_criterion(const std::string& name, RefinementCriterion fn) {
   criteria_.emplace_back(name, std::move(fn));
 }
@@ -215,8 +236,7 @@ void AmrGrid::synchronize_all() {
   for (int g = 0; g < vars_->size(); ++g) {
     const auto& spec = vars_->group(g);
     const auto c = spec.centering;
-    if ((spec.role != VariableRole::auxiliary || g == refine_group_) &&
-        (c == Centering::cell || c == Centering::face_x || c == Centering::face_y || c == Centering::face_z))
+    if ((spec.role != VariableRole::auxiliary || g == refine_group_) && c != Centering::vertex)
       all_groups.push_back(g);
   }
   synchronize(all_groups);
@@ -253,7 +273,8 @@ bool AmrGrid::move_to(std::vector<BlockKey> leaves) {
   if (const std::string why = balance_violation(config_, *next, *maps_); !why.empty())
     throw RunError("Grid: the new mesh is not 2:1 balanced (internal error): " + why);
   auto make = [this](std::int64_t gid, const BlockKey& key) { return make_block(gid, key); };
-  auto blocks = migrate_blocks(*forest_, block_ptrs_, *next, make, make, *vars_, *geometry_, rank_, exchange_comm_);
+  auto blocks = migrate_blocks(*forest_, block_ptrs_, *next, make, make, *vars_, *geometry_, *maps_, face_vectors_, rank_,
+                               exchange_comm_);
   install(std::move(next), std::move(blocks));
   return true;
 }

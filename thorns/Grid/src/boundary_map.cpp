@@ -98,8 +98,10 @@ std::optional<IndexMap> BoundaryMaps::image(int level, const std::array<int, 3>&
       const std::int64_t se = stagger[ue];
       compose(m, e, -1, up ? 2 * n[ue] - (1 - se) : -(1 - se));
     };
+    // Towards the middle of the phi range, so that a box holding the periodic face phi = 2 pi
+    // (face-centred phi groups) lands inside instead of straddling the seam.
     auto shift_phi_by_pi = [&] {
-      if (dim == 3) compose(m, 2, 1, n[2] / 2);
+      if (dim == 3) compose(m, 2, 1, cur.lo[2] >= n[2] / 2 ? -n[2] / 2 : n[2] / 2);
     };
     switch (bc) {
       case Boundary::outflow: return std::nullopt;

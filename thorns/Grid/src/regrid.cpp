@@ -4,7 +4,9 @@
 #include <cstring>
 #include <map>
 #include <set>
+#include <tuple>
 
+#include "face_prolongation.hpp"
 #include "ghost_plan.hpp"
 #include "remnant/error.hpp"
 #include "transfer.hpp"
@@ -18,7 +20,35 @@ enum class Source { same, parent, children };
 struct Origin {
   Source kind;
   std::vector<std::int64_t> old_gids;
+  // Prolonged blocks: same-level leaves of the old mesh across a face (direction, upper, old gid).
+  std::vector<std::tuple<int, bool, std::int64_t>> kept_faces;
 };
+
+// The same-level leaves of the old mesh across the faces of new block k (periodic faces
+// included; mirror faces lead back to the block's own range or to zero-area faces).
+std::vector<std::tuple<int, bool, std::int64_t>> kept_face_neighbours(const Forest& old_forest, const BoundaryMaps& maps,
+                                                                      const BlockKey& k) {
+  std::vector<std::tuple<int, bool, std::int64_t>> out;
+  const auto& n = old_forest.block_cells();
+  for (int d = 0; d < old_forest.dimension(); ++d)
+    for (const bool upper : {false, true}) {
+      const auto ud = static_cast<std::size_t>(d);
+      GlobalBox cell;
+      for (std::size_t e = 0; e < 3; ++e) {
+        cell.lo[e] = k.index[e] * n[e];
+        cell.hi[e] = cell.lo[e] + 1;
+      }
+      cell.lo[ud] = upper ? (k.index[ud] + 1) * n[ud] : k.index[ud] * n[ud] - 1;
+      cell.hi[ud] = cell.lo[ud] + 1;
+      const auto map = maps.image(k.level, {0, 0, 0}, cell);
+      if (!map || !map->preserves_orientation() || map->mirrored) continue;
+      const GlobalBox image = map->apply(cell);
+      BlockIndex K{};
+      for (std::size_t e = 0; e < 3; ++e) K[e] = image.lo[e] / n[e];
+      if (const auto g = old_forest.find(k.level, K); g >= 0) out.emplace_back(d, upper, g);
+    }
+  return out;
+}
 
 Origin origin_of(const Forest& old_forest, const BlockKey& k) {
   const int dim = old_forest.dimension();
@@ -60,7 +90,9 @@ Range origin_points(const Forest& f, const BlockKey& k) {
 std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std::span<Block* const> old_blocks,
                                                    const Forest& new_forest, const BlockFactory& make_new,
                                                    const BlockFactory& make_scratch, const VariableRegistry& vars,
-                                                   const LevelGeometry& geometry, int rank, MPI_Comm comm) {
+                                                   const LevelGeometry& geometry, const BoundaryMaps& maps,
+                                                   std::span<const FaceVector> face_vectors, int rank, MPI_Comm comm) {
+  const std::vector<int> member = face_vector_membership({face_vectors.begin(), face_vectors.end()}, vars.size());
   const std::int64_t old_first = old_forest.first_gid(rank), old_count = old_forest.block_count(rank);
   const std::int64_t new_first = new_forest.first_gid(rank), new_count = new_forest.block_count(rank);
   auto old_mine = [&](std::int64_t g) { return g >= old_first && g < old_first + old_count; };
@@ -71,7 +103,12 @@ std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std
   for (std::int64_t g = 0; g < new_forest.total_blocks(); ++g) {
     const int dest = new_forest.owner(g);
     Origin o = origin_of(old_forest, new_forest.key(g));
-    for (std::int64_t s : o.old_gids) {
+    std::vector<std::int64_t> needed = o.old_gids;
+    if (o.kind == Source::parent && !face_vectors.empty()) {
+      o.kept_faces = kept_face_neighbours(old_forest, maps, new_forest.key(g));
+      for (const auto& kf : o.kept_faces) needed.push_back(std::get<2>(kf));
+    }
+    for (std::int64_t s : needed) {
       const int src = old_forest.owner(s);
       if (src == dest) continue;
       if (src == rank) to_send[dest].insert(s);
@@ -134,6 +171,15 @@ std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std
       if (o.kind == Source::same) {
         Block& s = old_block(o.old_gids[0]);
         std::memcpy(nb->data(v), s.data(v), s.size(v) * sizeof(double));
+        continue;
+      }
+      if (const int fv = member[static_cast<std::size_t>(v)]; fv >= 0 && o.kind == Source::parent) {
+        // The whole vector at once, when its first group comes up.
+        const FaceVector& vec = face_vectors[static_cast<std::size_t>(fv)];
+        if (vec.group[0] != v) continue;
+        std::vector<KeptFace> kept;
+        for (const auto& [d, upper, g] : o.kept_faces) kept.push_back({d, upper, &old_block(g)});
+        prolong_face_vector(old_block(o.old_gids[0]), *nb, vec, new_forest.dimension(), kept);
         continue;
       }
       const auto stagger = effective_stagger(spec.centering, new_forest.dimension());

@@ -10,6 +10,8 @@
 #include <span>
 #include <vector>
 
+#include "boundary_map.hpp"
+#include "face_vector.hpp"
 #include "forest.hpp"
 #include "level_geometry.hpp"
 
@@ -18,10 +20,14 @@ namespace remnant::grid {
 using BlockFactory = std::function<std::unique_ptr<Block>(std::int64_t gid, const BlockKey& key)>;
 
 // `old_blocks`: this rank's blocks of `old_forest` in gid order, with current ghosts (the
-// prolongation reads them). Returns this rank's blocks of `new_forest` in gid order. Collective.
+// prolongation reads them). New children get the face vectors `face_vectors` by the
+// divergence-preserving prolongation (taking the shared faces of same-level blocks that the old
+// mesh had already, across periodic faces too), every other group by its transfer kernel.
+// Returns this rank's blocks of `new_forest` in gid order. Collective.
 std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std::span<Block* const> old_blocks,
                                                    const Forest& new_forest, const BlockFactory& make_new,
                                                    const BlockFactory& make_scratch, const VariableRegistry& vars,
-                                                   const LevelGeometry& geometry, int rank, MPI_Comm comm);
+                                                   const LevelGeometry& geometry, const BoundaryMaps& maps,
+                                                   std::span<const FaceVector> face_vectors, int rank, MPI_Comm comm);
 
 }  // namespace remnant::grid

@@ -53,15 +53,19 @@ struct Kernel {
     for (std::size_t d = 0; d < 3; ++d) J[d] = static_cast<int>(d) < dim ? floor_half(Q[d]) : Q[d];
     const bool cells = stagger[0] == 0 && stagger[1] == 0 && stagger[2] == 0;
     if (!cells) {
-      // Linear between the two coarse faces in the normal direction, constant across it.
-      for (int d = 0; d < dim; ++d) {
-        const auto ud = static_cast<std::size_t>(d);
-        if (!stagger[ud] || Q[ud] % 2 == 0) continue;
-        Range Jp = J;
-        Jp[ud] += 1;
-        return 0.5 * (at(J[0], J[1], J[2]) + at(Jp[0], Jp[1], Jp[2]));
+      // Faces: linear between the two coarse faces in the normal direction, constant across it.
+      // Edges: bilinear between the coarse nodes in their staggered directions, constant along.
+      int odd[3], m = 0;
+      for (int d = 0; d < dim; ++d)
+        if (stagger[static_cast<std::size_t>(d)] && Q[static_cast<std::size_t>(d)] % 2 != 0) odd[m++] = d;
+      if (m == 0) return at(J[0], J[1], J[2]);
+      double sum = 0;
+      for (int c = 0; c < (1 << m); ++c) {
+        Range Jc = J;
+        for (int b = 0; b < m; ++b) Jc[static_cast<std::size_t>(odd[b])] += (c >> b) & 1;
+        sum += at(Jc[0], Jc[1], Jc[2]);
       }
-      return at(J[0], J[1], J[2]);
+      return sum / static_cast<double>(1 << m);
     }
     const double u0 = at(J[0], J[1], J[2]);
     double v = u0;

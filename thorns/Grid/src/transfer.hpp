@@ -37,8 +37,9 @@ inline Field buffer_field(double* data, const Box& box) {
 // dst(p) = sign * (copy | restrict | prolong of src)(map(p)) for every p in t.dst_box.
 // Cell-centred (stagger 0): volume-weighted restriction, conservative slope-limited (MC) linear
 // prolongation about the sqrt(f) centroids. Face-centred: area-weighted restriction, prolongation
-// linear in the normal and constant in the tangential directions (a placeholder until the
-// divergence-preserving one comes with the magnetic field).
+// linear in the normal and constant in the tangential directions (ghosts; new blocks of a regrid
+// get face-normal vectors from face_prolongation.hpp). Edge-centred: the mean over the fine edges
+// along (with their 1D weights), prolongation bilinear across and constant along.
 void apply_transfer(const Transfer& t, const Field& src, const Field& dst, double sign,
                     const std::array<int, 3>& stagger, int dimension, const LevelGeometry& geometry);
 

@@ -71,19 +71,19 @@ TEST(GhostExchange, OnlyTheRequestedGroupsChange) {
   EXPECT_TRUE(std::isnan(b.field(t.vector, 0)(-1, 0, 0))) << "vector ghosts were not requested";
 }
 
-TEST(GhostExchange, EdgeCentredGroupsAreRefusedClearly) {
+TEST(GhostExchange, VertexCentredGroupsAreRefusedClearly) {
   GridConfig c;
   c.ncells = {16, 16, 16};
   c.block_size = {8, 8, 8};
   VariableRegistry vars;
-  const int face = add_group(vars, "Ex", TensorKind::scalar, Centering::edge_x);
+  const int face = add_group(vars, "P", TensorKind::scalar, Centering::vertex);
   AmrGrid grid(c, vars, MPI_COMM_SELF);
   const std::vector<int> groups = {face};
   try {
     grid.synchronize(groups);
     FAIL() << "expected a RunError";
   } catch (const RunError& e) {
-    EXPECT_NE(std::string(e.what()).find("edge_x-centred group 'Test::Ex' is not supported"),
+    EXPECT_NE(std::string(e.what()).find("vertex-centred group 'Test::P' is not supported"),
               std::string::npos) << e.what();
   }
 }

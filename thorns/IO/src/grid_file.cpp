@@ -156,6 +156,7 @@ GridFileSummary write_grid_file(const GridFileSpec& spec, const std::vector<Patc
       h5::Handle d(H5Dopen2(data, name.c_str(), H5P_DEFAULT), H5Dclose);
       h5::write_attr(d, "name", spec.variables[v].full);
       h5::write_attr(d, "nan_count", total);
+      if (!spec.variables[v].centering_note.empty()) h5::write_attr(d, "centering", spec.variables[v].centering_note);
     }
     data.reset();  // a parallel file closes only when nothing in it is open
     file.close_checked(tmp);

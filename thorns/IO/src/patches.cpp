@@ -69,10 +69,16 @@ std::vector<Patch> extract_patches(std::span<Block* const> blocks, int dimension
       const Field f = b.field(v.group, v.comp);
       std::vector<double> vals;
       vals.reserve(static_cast<std::size_t>(count[0]) * count[1] * count[2]);
+      // Face groups: the mean of the lower and upper face of each cell along their direction.
+      const std::ptrdiff_t up = v.average_direction < 0 ? 0 : v.average_direction == 0 ? 1 : v.average_direction == 1 ? f.sj : f.sk;
       for (int k = first[2]; k < first[2] + count[2]; ++k)
         for (int j = first[1]; j < first[1] + count[1]; ++j) {
           const double* row = &f(first[0], j, k);
-          vals.insert(vals.end(), row, row + count[0]);
+          if (up == 0) {
+            vals.insert(vals.end(), row, row + count[0]);
+          } else {
+            for (int i = 0; i < count[0]; ++i) vals.push_back(0.5 * (row[i] + row[i + up]));
+          }
         }
       p.values.push_back(std::move(vals));
     }

@@ -61,10 +61,19 @@ void check_parameters(Context& ctx) {
                              ctx.param<std::vector<std::string>>("IO", "tsv_reductions"));
   GridOutputPlan& g = s.grid;
   g.variables = resolve_variables(ctx, "hdf5_variables", ctx.param<std::vector<std::string>>("IO", "hdf5_variables"));
-  for (const auto& v : g.variables)
-    if (ctx.vars().group(v.group).centering != Centering::cell)
+  for (auto& v : g.variables) {
+    // Face groups are written as cell averages of their two faces (checkpoints keep raw faces).
+    const Centering c = ctx.vars().group(v.group).centering;
+    const int face = c == Centering::face_x ? 0 : c == Centering::face_y ? 1 : c == Centering::face_z ? 2 : -1;
+    if (c != Centering::cell && face < 0)
       throw InputError(ctx.params().origin("IO", "hdf5_variables"),
-                       "IO::hdf5_variables: " + v.full + " is not cell-centred; only cell-centred groups are written so far");
+                       "IO::hdf5_variables: " + v.full + " is " + to_string(c) +
+                           "-centred; grid output writes cell- and face-centred groups (faces as cell averages)");
+    if (face >= 0 && (!ctx.has_grid() || face < ctx.grid().dimension())) {
+      v.average_direction = face;
+      v.centering_note = std::string("cell average of ") + to_string(c);
+    }
+  }
   g.outputs = ctx.param<std::vector<std::string>>("IO", "hdf5_output");
   g.point = point(ctx, "slice_point");
   g.xdmf = ctx.param<bool>("IO", "hdf5_xdmf");

@@ -13,6 +13,10 @@ struct VariableRef {
   int comp = 0;
   std::string full;  // "WaveToy::wave.u"
   std::string file;  // "WaveToy-wave.u": usable in file and HDF5 names (no "::")
+  // Grid output of a face-centred group: the direction whose two faces are averaged into each
+  // cell (-1: cell-centred, written as is) and the note marking the data ("cell average of face_x").
+  int average_direction = -1;
+  std::string centering_note;
 };
 
 std::vector<VariableRef> resolve_variables(const Context& ctx, const std::string& param,

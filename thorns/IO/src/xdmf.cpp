@@ -82,6 +82,7 @@ std::string xdmf_grid_element(const GridFileSpec& spec, const GridFileSummary& s
     s << "        </Geometry>\n";
     for (const auto& v : spec.variables) {
       s << "        <Attribute Name=\"" << v.file << "\" AttributeType=\"Scalar\" Center=\"Cell\">\n";
+      if (!v.centering_note.empty()) s << "          <Information Name=\"centering\" Value=\"" << v.centering_note << "\"/>\n";
       s << slab(h5_name, "/data/" + v.file, nb, b, cells, "          ");
       s << "        </Attribute>\n";
     }

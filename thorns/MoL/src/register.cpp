@@ -142,16 +142,20 @@ void update(Context& ctx) {
     for (int g : ctx.vars().evolved()) {
       const auto& spec = ctx.vars().group(g);
       const double* u0 = s.u0.at({b->gid, g}).data();
+      // Interior points: cells, and for face groups the faces of the interior, both block faces
+      // included (n + 1 along a used staggered direction).
+      const auto extent = b->extent(spec.centering);
+      const int points[3] = {extent[0] - 2 * b->ng[0], extent[1] - 2 * b->ng[1], extent[2] - 2 * b->ng[2]};
       for (int c = 0; c < spec.ncomp(); ++c) {
         Field u = b->field(g, c);
         Field rhs = b->field(spec.rhs_id, c);
         // Interior rows are contiguous in i: update row by row.
-        for (int k = 0; k < b->n[2]; ++k)
-          for (int j = 0; j < b->n[1]; ++j) {
+        for (int k = 0; k < points[2]; ++k)
+          for (int j = 0; j < points[1]; ++j) {
             double* urow = &u(0, j, k);
             const double* rrow = &rhs(0, j, k);
             const double* u0row = u0 + (urow - b->data(g));
-            runge_kutta_update(urow, u0row, rrow, static_cast<std::size_t>(b->n[0]), st.a, st.b, dt);
+            runge_kutta_update(urow, u0row, rrow, static_cast<std::size_t>(points[0]), st.a, st.b, dt);
           }
       }
     }

@@ -22,6 +22,8 @@ class BoundaryMaps;
 class LevelGeometry;
 class GhostExchange;
 class FluxCorrection;
+class EdgeCorrection;
+struct FaceVector;
 
 class AmrGrid final : public GridDriver {
  public:
@@ -46,6 +48,7 @@ class AmrGrid final : public GridDriver {
   std::vector<BlockKey> all_blocks() const override;
   void restore_blocks(std::span<const BlockKey> blocks) override;
   void correct_fluxes(std::span<const int> face_groups) override;
+  void correct_edges(std::span<const int> edge_groups) override;
   void add_refinement_criterion(const std::string& name, RefinementCriterion fn) override;
 
   // One adaptive regrid: synchronises every variable, evaluates the criteria (Löhner on
@@ -84,10 +87,12 @@ class AmrGrid final : public GridDriver {
   std::vector<Block*> block_ptrs_;
   std::map<std::array<int, 3>, std::unique_ptr<GhostExchange>> exchanges_;
   std::unique_ptr<FluxCorrection> flux_;
+  std::map<std::array<int, 3>, std::unique_ptr<EdgeCorrection>> edges_;
   std::vector<std::pair<std::string, RefinementCriterion>> criteria_;
   int refine_group_ = -1, refine_comp_ = 0;
   double min_spacing_ = 0;
   std::vector<int> last_wishes_;
+  std::vector<FaceVector> face_vectors_;  // divergence-preserving face groups
 };
 
 }  // namespace remnant::grid
