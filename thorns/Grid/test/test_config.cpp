@@ -94,7 +94,7 @@ ThornSpec grid_thorn_spec() {
 
 TEST(GridConfig, ThornYamlDefaultsGiveTheDefaultConfig) {
   const ThornSpec spec = grid_thorn_spec();
-  EXPECT_EQ(spec.provides, (std::vector<std::string>{"grid"}));
+  EXPECT_EQ(spec.provides, (std::vector<std::string>{"grid", "staggered_grid"}));
   Parameters params;
   for (const auto& p : spec.parameters) params.declare(p);
   const GridConfig c = config_from_parameters(params);
