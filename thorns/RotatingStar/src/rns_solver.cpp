@@ -39,7 +39,8 @@ RotatingStarModel::RotatingStarModel(const tov::ColdSlice& slice, const RnsParam
   check_parameters(p_);
   Hc_ = slice.log_enthalpy(p_.rho_central);
   const double rho_back = Hc_ > 0 ? slice.at(Hc_).rho : 0;
-  if (!(Hc_ > 0) || std::abs(rho_back / p_.rho_central - 1) > 1e-6)
+  // 1e-3: a tabulated slice interpolates H(rho) and rho(H) separately; a clamped density is far off.
+  if (!(Hc_ > 0) || std::abs(rho_back / p_.rho_central - 1) > 1e-3)
     throw RnsError(fmt("central density %g is outside the EOS slice (it gives %g)", p_.rho_central, rho_back));
   nmu_ = p_.n_theta;
   // The static star of the same central density: the radial scale and the first guess.
