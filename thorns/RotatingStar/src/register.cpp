@@ -25,10 +25,16 @@ std::unique_ptr<tov::ColdSlice> make_slice(const Context& ctx) {
     return tov::polytrope_slice(ctx.param<double>("RotatingStar", "poly_K"), ctx.param<double>("RotatingStar", "poly_gamma"),
                                 ctx.param<double>("RotatingStar", "ye"));
   const auto* table = ctx.service<eos::EOS>("eos").tabulated();
-  if (!table) throw RunError("RotatingStar::eos_slice = tabulated_beta needs EOS::type = tabulated");
+  const std::string kind = ctx.param<std::string>("RotatingStar", "eos_slice");
+  if (!table) throw RunError("RotatingStar::eos_slice = " + kind + " needs EOS::type = tabulated");
   const std::string bad = check_density_in_table(*table, ctx.param<double>("RotatingStar", "rho_central"));
   if (!bad.empty()) throw RunError("RotatingStar::rho_central: " + bad);
-  return beta_slice(*table);
+  const double T = ctx.param<double>("RotatingStar", "slice_T");
+  try {
+    return kind == "tabulated_beta" ? beta_slice(*table, T) : fixed_ye_slice(*table, ctx.param<double>("RotatingStar", "ye"), T);
+  } catch (const std::runtime_error& e) {
+    throw RunError(std::string("RotatingStar::eos_slice = ") + kind + ": " + e.what() + " (RotatingStar::slice_T, RotatingStar::ye)");
+  }
 }
 
 RnsParameters read_parameters(const Context& ctx) {
@@ -56,7 +62,7 @@ struct Cached {
 const RotatingStarModel& model_for(const Context& ctx) {
   static std::map<std::string, Cached> cache;  // key: the resolved parameters of this thorn
   std::string key = ctx.param<std::string>("RotatingStar", "eos_slice") + ctx.param<std::string>("RotatingStar", "rotation_law");
-  for (const char* n : {"poly_K", "poly_gamma", "ye", "rho_central", "omega", "axis_ratio", "A2", "r_out_factor", "tolerance"})
+  for (const char* n : {"poly_K", "poly_gamma", "ye", "slice_T", "rho_central", "omega", "axis_ratio", "A2", "r_out_factor", "tolerance"})
     key += " " + std::to_string(ctx.param<double>("RotatingStar", n));
   for (const char* n : {"nr", "n_theta", "lmax"}) key += " " + std::to_string(ctx.param<std::int64_t>("RotatingStar", n));
   auto it = cache.find(key);

@@ -118,11 +118,14 @@ bool RotatingStarModel::matter_from_bernoulli(bool ramping) {
       const auto lr = local_rotation(p_.law, om, A2_, R, alpha, m.bphi);
       return lr ? C_ - std::log(alpha) + lr->bernoulli : 1.0;
     };
-    // H(r_e) rises with the rotation rate: bisect for H(r_e) = 0.
+    // H(r_e) rises with the rotation rate: bisect for H(r_e) = 0 (ratio 1: the static star, where
+    // the bisection would return round-off).
     double lo = 0, hi = 4 * (alpha / R - m.bphi) + 1e-300;
-    if (H_at_re(lo) > 0) throw RnsError(fmt("axis ratio %g: the static star is already wider than r_p / ratio", p_.axis_ratio));
-    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) (H_at_re(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
-    omega_ = 0.5 * (lo + hi);
+    if (p_.axis_ratio < 1 && H_at_re(lo) > 0)
+      throw RnsError(fmt("axis ratio %g: the static star is already wider than r_p / ratio", p_.axis_ratio));
+    for (int it = 0; it < 200 && p_.axis_ratio < 1 && hi - lo > 1e-15 * hi; ++it)
+      (H_at_re(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
+    omega_ = p_.axis_ratio < 1 ? 0.5 * (lo + hi) : 0.0;
   }
   for (int j = 0; j < nmu_; ++j) {
     const double mu = leg_.mu[j], s = std::sqrt(1 - mu * mu);

@@ -25,6 +25,7 @@ check beyond_shedding 1 "beyond mass shedding" "$exe" --rho-c=1.28e-3 --omega=0.
 check bad_number 2 "--omega=abc: not a number" "$exe" --rho-c=1.28e-3 --omega=abc
 check unknown_option 2 "unknown option --omgea" "$exe" --rho-c=1.28e-3 --omgea=0.01
 check both_targets 2 "not both" "$exe" --rho-c=1.28e-3 --omega=0.01 --axis-ratio=0.8
+check static_ratio 0 "^Omega_c = 0$" "$exe" --rho-c=1.28e-3 --axis-ratio=1 --nr=100
 check sequence 1 "the sequence stops here" "$exe" --rho-c=1.28e-3 --nr=100 --sequence=axis-ratio:0.9:0.5:5 --out="$tmp/seq.tsv"
 rows=$(($(wc -l <"$tmp/seq.tsv") - 1))
 if [ "$rows" = 4 ] && head -1 "$tmp/seq.tsv" | grep -q "M_komar"; then echo "ok   sequence_tsv ($rows models before shedding)";
@@ -32,6 +33,8 @@ else echo "FAIL sequence_tsv: $rows rows"; cat "$tmp/seq.tsv"; fail=1; fi
 table="$src/../shared/eos/SFHo_reduced_39r_39t_20y.h5"
 if [ -f "$table" ]; then
   check table_density 1 "outside the EOS table's density range" "$exe" --eos-table="$table" --rho-c=100 --omega=0.01
+  check table_fixed_ye 0 "^M_komar = 1\.33" "$exe" --eos-table="$table" --rho-c=1.2e-3 --omega=0.02633 --ye=0.1 --T=0.5 --nr=200
+  check table_bad_ye 1 "slice Ye 0.9 is outside the table's range" "$exe" --eos-table="$table" --rho-c=1.2e-3 --omega=0.01 --ye=0.9
   check table_model 0 "^M_komar = 1\.3" "$exe" --eos-table="$table" --rho-c=1.2e-3 --omega=0.02633 --nr=200
 else echo "skip table checks: $table missing"; fi
 exit $fail

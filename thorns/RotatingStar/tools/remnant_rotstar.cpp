@@ -2,7 +2,8 @@
 //   remnant-rotstar --K=100 --gamma=2 --rho-c=1.28e-3 --omega=0.02              uniform rotation
 //   remnant-rotstar --rho-c=1.28e-3 --axis-ratio=0.7                            Omega found
 //   remnant-rotstar --rho-c=1.28e-3 --A2=70 --omega-c=0.02575                   j-constant law
-//   remnant-rotstar --eos-table=FILE --rho-c=...                                table's cold beta slice
+//   remnant-rotstar --eos-table=FILE --rho-c=... [--T=MeV] [--ye=YE]             table: beta equilibrium
+//                                                                               (or fixed Ye) at T_min (or T)
 //   remnant-rotstar ... --sequence=axis-ratio:1:0.6:9 --out=seq.tsv             a sequence (TSV)
 // One model prints `name = value` lines; a sequence writes one TSV row per model. Options:
 // --nr, --ntheta, --lmax, --r-out-factor, --tolerance (solver), --ye (polytrope), --code-rho (with a
@@ -32,7 +33,7 @@ struct UsageError : std::runtime_error {
 };
 
 const char* kUsage =
-    "usage: remnant-rotstar [--K=100] [--gamma=2] [--ye=0.5] | [--eos-table=FILE]\n"
+    "usage: remnant-rotstar [--K=100] [--gamma=2] [--ye=0.5] | [--eos-table=FILE [--T=MeV] [--ye=YE]]\n"
     "                       --rho-c=RHO  (--omega=OMEGA | --axis-ratio=Q | --A2=A2 --omega-c=OMEGA_C | --A2=A2 --axis-ratio=Q)\n"
     "                       [--sequence=rho-c|axis-ratio|omega:FROM:TO:N --out=FILE.tsv]\n"
     "                       [--nr=400] [--ntheta=24] [--lmax=20] [--r-out-factor=2] [--tolerance=1e-11]\n";
@@ -56,7 +57,7 @@ int run(int argc, char** argv) {
     if (arg.rfind("--", 0) != 0 || eq == std::string::npos) throw UsageError("argument '" + arg + "': expected --name=value");
     opt[arg.substr(2, eq - 2)] = arg.substr(eq + 1);
   }
-  static const char* known[] = {"K", "gamma", "ye", "eos-table", "rho-c", "omega", "omega-c", "A2", "axis-ratio",
+  static const char* known[] = {"K", "gamma", "ye", "T", "eos-table", "rho-c", "omega", "omega-c", "A2", "axis-ratio",
                                 "sequence", "out", "nr", "ntheta", "lmax", "r-out-factor", "tolerance"};
   for (const auto& [k, v] : opt) {
     bool ok = false;
@@ -90,8 +91,10 @@ int run(int argc, char** argv) {
   if (opt.count("eos-table")) {
     if (opt.count("K") || opt.count("gamma")) throw UsageError("--eos-table excludes --K and --gamma");
     table = std::make_unique<remnant::eos::Tabulated<>>(remnant::eos::load_table(opt["eos-table"]));
-    slice = beta_slice(*table);
+    const double T = get("T", -1);
+    slice = opt.count("ye") ? fixed_ye_slice(*table, get("ye", 0), T) : beta_slice(*table, T);
   } else {
+    if (opt.count("T")) throw UsageError("--T is for --eos-table");
     slice = remnant::tov::polytrope_slice(get("K", 100), get("gamma", 2), get("ye", 0.5));
   }
   auto check_rho = [&](double rho) {

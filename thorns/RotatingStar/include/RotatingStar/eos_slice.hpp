@@ -1,7 +1,9 @@
 #pragma once
-// The cold slices RotatingStar builds on: a polytrope, or the cold (T_min) neutrinoless
-// beta-equilibrium slice of a table over its whole density range (800 logarithmic points).
+// The barotropic slices RotatingStar builds on (besides a polytrope): a table at fixed T (T_min
+// when T < 0), either in neutrinoless beta equilibrium or at a fixed Ye, over the table's whole
+// density range (800 logarithmic points). T or Ye outside the table throw std::runtime_error.
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 #include "EOS/tabulated.hpp"
@@ -9,7 +11,8 @@
 
 namespace remnant::rotstar {
 
-std::unique_ptr<tov::ColdSlice> beta_slice(const eos::Tabulated<>& table);
+std::unique_ptr<tov::ColdSlice> beta_slice(const eos::Tabulated<>& table, double T = -1);
+std::unique_ptr<tov::ColdSlice> fixed_ye_slice(const eos::Tabulated<>& table, double ye, double T = -1);
 // Empty when rho_c lies inside the table's density range, else the error message.
 std::string check_density_in_table(const eos::Tabulated<>& table, double rho_c);
 
