@@ -51,23 +51,23 @@ LegendreTable::LegendreTable(int n_half, int lmax_) : lmax(lmax_) {
   }
 }
 
-RadialSolution solve_radial(int l, double dr, const std::vector<double>& s) {
+RadialSolution solve_radial(int l, const std::vector<double>& r, const std::vector<double>& s) {
   // u_l(r) = -1/(2l+1) [A(r) + B(r)], A = r^-(l+1) int_0^r s r'^(l+2), B = r^l int_r^R s r'^(1-l);
   // both are accumulated as ratios so that no power of r over- or underflows.
   const std::size_t n = s.size();
   std::vector<double> A(n, 0.0), B(n, 0.0);
   for (std::size_t i = 1; i < n; ++i) {
-    const double ri = i * dr, rm = (i - 1) * dr, q = rm / ri, ql = std::pow(q, l + 1);
-    A[i] = ql * A[i - 1] + 0.5 * dr * (s[i - 1] * rm * ql + s[i] * ri);
+    const double ri = r[i], rm = r[i - 1], h = ri - rm, ql = std::pow(rm / ri, l + 1);
+    A[i] = ql * A[i - 1] + 0.5 * h * (s[i - 1] * rm * ql + s[i] * ri);
   }
   for (std::size_t i = n - 1; i-- > 0;) {
-    const double ri = i * dr, rp = (i + 1) * dr;
+    const double ri = r[i], rp = r[i + 1], h = rp - ri;
     if (i == 0 && l > 0) {
       B[0] = 0;
       break;
     }
     const double ql = l == 0 ? 1.0 : std::pow(ri / rp, l);
-    B[i] = ql * B[i + 1] + 0.5 * dr * (s[i] * ri + s[i + 1] * rp * ql);
+    B[i] = ql * B[i + 1] + 0.5 * h * (s[i] * ri + s[i + 1] * rp * ql);
   }
   RadialSolution out;
   out.u.resize(n);
@@ -75,10 +75,10 @@ RadialSolution solve_radial(int l, double dr, const std::vector<double>& s) {
   const double c = -1.0 / (2 * l + 1);
   for (std::size_t i = 0; i < n; ++i) {
     out.u[i] = c * (A[i] + B[i]);
-    out.du[i] = i == 0 ? 0.0 : c * (-(l + 1) * A[i] + l * B[i]) / (i * dr);
+    out.du[i] = i == 0 ? 0.0 : c * (-(l + 1) * A[i] + l * B[i]) / r[i];
   }
-  // du/dr at the centre: zero for l != 1 by regularity; u_1 ~ r there.
-  if (l == 1 && n > 2) out.du[0] = 2 * out.du[1] - out.du[2];
+  // du/dr at the centre: zero for l != 1 by regularity; u_1 ~ r there (linear extrapolation).
+  if (l == 1 && n > 2) out.du[0] = out.du[1] - (out.du[2] - out.du[1]) * r[1] / (r[2] - r[1]);
   return out;
 }
 

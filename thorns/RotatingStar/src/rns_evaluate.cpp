@@ -1,5 +1,5 @@
 // RotatingStarModel::metric and ::at: the multipoles summed at any point (cubic Lagrange
-// interpolation in r inside r_out, the exact r^-(l+1) fall-off outside), the matter from the
+// interpolation in r inside r_max, the exact r^-(l+1) fall-off outside), the matter from the
 // Bernoulli integral at that point, so that the surface is as sharp as the output grid allows.
 #include <algorithm>
 #include <array>
@@ -10,26 +10,28 @@
 namespace remnant::rotstar {
 namespace {
 
-// Cubic Lagrange weights (value and derivative) of the nodes i0..i0+3 at x (in units of dr).
+// Cubic Lagrange weights (value and r-derivative) of the nodes i0..i0+3 around r.
 struct Stencil {
   int i0;
   std::array<double, 4> w, dw;
 };
 
-Stencil stencil(double x, int n_last, double dr) {
+Stencil stencil(const std::vector<double>& nodes, double r, int n_uniform, double dr) {
+  const int last = int(nodes.size()) - 1;
+  int i = r <= n_uniform * dr ? int(r / dr) : int(std::upper_bound(nodes.begin(), nodes.end(), r) - nodes.begin()) - 1;
   Stencil s;
-  s.i0 = std::clamp(int(std::floor(x)) - 1, 0, n_last - 3);
+  s.i0 = std::clamp(i - 1, 0, last - 3);
   for (int a = 0; a < 4; ++a) {
     double w = 1, dw = 0;
+    const double xa = nodes[s.i0 + a];
     for (int b = 0; b < 4; ++b) {
       if (b == a) continue;
-      const double den = a - b, t = (x - s.i0 - b) / den;
-      // d/dx of the product: sum over factors of (1/den) * (product of the others).
-      dw = dw * t + w / den;
+      const double xb = nodes[s.i0 + b], den = xa - xb, t = (r - xb) / den;
+      dw = dw * t + w / den;  // product rule, with the old w
       w *= t;
     }
     s.w[a] = w;
-    s.dw[a] = dw / dr;
+    s.dw[a] = dw;
   }
   return s;
 }
@@ -40,17 +42,19 @@ RotatingStarModel::Metric RotatingStarModel::metric(double r, double theta) cons
   const double mu = std::cos(theta), s = std::sin(theta);
   std::vector<double> P, dP, d2P;
   legendre(p_.lmax, mu, P, dP, d2P);
-  Metric m{1, 1, 0, 0, 0, 0, 0, 0, 0};
-  const int N = p_.nr;
-  const double R = r_out();
-  auto c_of = [&](int l, int i) { return i > 0 ? b_l_[l][i] / (i * dr_) : (l == 1 ? db_l_[l][0] : 0.0); };
-  auto dc_of = [&](int l, int i) { return i > 0 ? (db_l_[l][i] - c_of(l, i)) / (i * dr_) : 0.0; };
+  Metric m{1, 1, 0, 0, 0, 0, 0, 0, 0, 0};
+  double a_r = 0, a_t = 0;  // (x_r - x/r) / sin, (x_theta - x cot) / sin^2 with x = r sin X^phi
+  const int N = N_;
+  const double R = r_max();
+  auto c_of = [&](int l, int i) { return i > 0 ? b_l_[l][i] / r_[i] : (l == 1 ? db_l_[l][0] : 0.0); };
+  auto dc_of = [&](int l, int i) { return i > 0 ? (db_l_[l][i] - c_of(l, i)) / r_[i] : 0.0; };
   if (r <= R) {
-    const Stencil st = stencil(r / dr_, N, dr_);
+    const Stencil st = stencil(r_, r, p_.nr, dr_);
     for (int l = 0; l <= p_.lmax; ++l) {
-      double u1 = 0, du1 = 0, u2 = 0, du2 = 0;
+      double u1 = 0, du1 = 0, u2 = 0, du2 = 0, x = 0, dx = 0;
       for (int a = 0; a < 4; ++a) {
         const int i = st.i0 + a;
+        if (l % 2 == 1) x += st.w[a] * x_l_[l][i], dx += st.w[a] * dx_l_[l][i];
         if (l % 2 == 0) {
           u1 += st.w[a] * psi_l_[l][i];
           du1 += st.w[a] * dpsi_l_[l][i];
@@ -66,8 +70,10 @@ RotatingStarModel::Metric RotatingStarModel::metric(double r, double theta) cons
         m.apsi += u2 * P[l], m.dapsi_r += du2 * P[l], m.dapsi_t -= s * u2 * dP[l];
       } else {
         m.bphi += u1 * dP[l], m.dbphi_r += du1 * dP[l], m.dbphi_t -= s * u1 * d2P[l];
+        if (r > 0) a_r += (dx - x / r) * dP[l], a_t += x * d2P[l];
       }
     }
+    if (r > 0) m.aa = 2 * (s * s * a_r * a_r + s * s * s * s * a_t * a_t / (r * r));
     return m;
   }
   for (int l = 0; l <= p_.lmax; ++l) {
@@ -79,8 +85,11 @@ RotatingStarModel::Metric RotatingStarModel::metric(double r, double theta) cons
     } else {
       const double c = b_l_[l][N] * f / r;  // b_l ~ r^-(l+1), c = b / r
       m.bphi += c * dP[l], m.dbphi_r -= (l + 2) * c / r * dP[l], m.dbphi_t -= s * c * d2P[l];
+      const double x = x_l_[l][N] * f;
+      a_r += (-(l + 1) * x / r - x / r) * dP[l], a_t += x * d2P[l];
     }
   }
+  m.aa = 2 * (s * s * a_r * a_r + s * s * s * s * a_t * a_t / (r * r));
   return m;
 }
 

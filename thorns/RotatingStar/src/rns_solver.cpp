@@ -46,12 +46,15 @@ RotatingStarModel::RotatingStarModel(const tov::ColdSlice& slice, const RnsParam
   // The static star of the same central density: the radial scale and the first guess.
   const tov::TovStar tov(slice, p_.rho_central, 2000);
   dr_ = p_.r_out_factor * tov.isotropic_radius() / p_.nr;
+  for (int i = 0; i <= p_.nr; ++i) r_.push_back(i * dr_);
+  for (double h = 1.05 * dr_; r_.back() < p_.r_max_factor * r_out(); h *= 1.05) r_.push_back(r_.back() + h);
+  N_ = int(r_.size()) - 1;
   r_e_ = r_p_ = tov.isotropic_radius();
-  const int n = p_.nr + 1, L = p_.lmax + 1;
+  const int n = N_ + 1, L = p_.lmax + 1;
   for (auto* a : {&psi_l_, &dpsi_l_, &apsi_l_, &dapsi_l_, &b_l_, &db_l_, &x_l_, &dx_l_})
     a->assign(L, std::vector<double>(n, 0.0));
   for (int i = 0; i < n; ++i) {
-    const tov::TovPoint t = tov.at(i * dr_);
+    const tov::TovPoint t = tov.at(r_[i]);
     psi_l_[0][i] = t.psi - 1;
     apsi_l_[0][i] = t.alpha * t.psi - 1;
   }
@@ -62,7 +65,7 @@ RotatingStarModel::RotatingStarModel(const tov::ColdSlice& slice, const RnsParam
 }
 
 void RotatingStarModel::evaluate_metric_on_grid() {
-  for (int i = 0; i <= p_.nr; ++i)
+  for (int i = 0; i <= N_; ++i)
     for (int j = 0; j < nmu_; ++j) {
       double ps = 1, ap = 1, bp = 0;
       for (int l = 0; l <= p_.lmax; ++l) {
@@ -70,7 +73,7 @@ void RotatingStarModel::evaluate_metric_on_grid() {
           ps += psi_l_[l][i] * leg_.P[l][j];
           ap += apsi_l_[l][i] * leg_.P[l][j];
         } else {
-          const double c = i > 0 ? b_l_[l][i] / (i * dr_) : (l == 1 ? db_l_[l][0] : 0.0);
+          const double c = i > 0 ? b_l_[l][i] / r_[i] : (l == 1 ? db_l_[l][0] : 0.0);
           bp += c * leg_.dP[l][j];
         }
       }
@@ -87,7 +90,7 @@ double RotatingStarModel::surface_radius(double mu, double omega, double A2) con
   const double s = std::sqrt(std::max(0.0, 1 - mu * mu));
   double H_prev = Hc_, r_prev = 0;
   for (int i = 1; i <= p_.nr; ++i) {
-    const double r = i * dr_;
+    const double r = r_[i];
     const Metric m = metric(r, std::acos(mu));
     const double alpha = m.apsi / m.psi;
     const auto lr = local_rotation(p_.law, omega, A2, m.psi * m.psi * r * s, alpha, m.bphi);
@@ -130,13 +133,13 @@ bool RotatingStarModel::matter_from_bernoulli(bool ramping) {
   for (int j = 0; j < nmu_; ++j) {
     const double mu = leg_.mu[j], s = std::sqrt(1 - mu * mu);
     bool inside = true;
-    for (int i = 0; i <= p_.nr; ++i) {
+    for (int i = 0; i <= N_; ++i) {
       const std::size_t k = std::size_t(i) * nmu_ + j;
-      const double r = i * dr_, alpha = apsi_[k] / psi_[k];
+      const double r = r_[i], alpha = apsi_[k] / psi_[k];
       const auto lr = local_rotation(p_.law, omega_, A2_, psi_[k] * psi_[k] * r * s, alpha, bphi_[k]);
       const double H = lr ? C_ - std::log(alpha) + lr->bernoulli : -1.0;
       H_[k] = H;
-      inside = inside && lr && H > 0;
+      inside = inside && lr && H > 0 && i <= p_.nr;
       if (inside) {
         const tov::ColdState st = slice_.at(H);
         rho_[k] = st.rho, eps_[k] = st.eps, press_[k] = st.press, ye_[k] = st.ye;
@@ -147,7 +150,7 @@ bool RotatingStarModel::matter_from_bernoulli(bool ramping) {
         W_[k] = 1;
         omega_f_[k] = lr ? lr->omega : 0;
       }
-      if (i == p_.nr && inside && !ramping)
+      if (i == p_.nr && inside && H > 0 && !ramping)
         throw RnsError(fmt("no stellar surface inside r_out = %g along theta = %g: the rotation is beyond mass shedding or the star does not fit the grid (r_out_factor)",
                            r_out(), std::acos(mu)));
     }
@@ -186,11 +189,11 @@ void RotatingStarModel::solve() {
     // (alternating, growing ~10 % per step for BU0).
     for (std::size_t q = 0; q < all.size(); ++q)
       for (int l = 0; l <= p_.lmax; ++l)
-        for (int i = 0; i <= p_.nr; ++i)
+        for (int i = 0; i <= N_; ++i)
           (*all[q])[l][i] = p_.relaxation * (*all[q])[l][i] + (1 - p_.relaxation) * old[q][l][i];
     change = 0;
     for (int l = 0; l <= p_.lmax; l += 2)
-      for (int i = 0; i <= p_.nr; ++i)
+      for (int i = 0; i <= N_; ++i)
         change = std::max({change, std::abs(psi_l_[l][i] - psi_old[l][i]), std::abs(apsi_l_[l][i] - apsi_old[l][i])});
     if (std::getenv("RNS_DEBUG")) std::fprintf(stderr, "it %d change %.3e psi_c %.8f apsi_c %.8f omega %.6f re %.5f rp %.5f\n", it, change, 1 + psi_l_[0][0], 1 + apsi_l_[0][0], omega_, r_e_, r_p_);
     if (!std::isfinite(change)) throw RnsError("the iteration produced NaN: no equilibrium for these parameters");
@@ -213,7 +216,7 @@ void RotatingStarModel::solve() {
 }
 
 void RotatingStarModel::solve_potentials() {
-  const int n = p_.nr + 1;
+  const int n = N_ + 1;
   const std::size_t N = std::size_t(n) * nmu_;
   std::vector<double> E(N), S(N), Sphi(N), src(N);  // Sphi = S_phi / (r sin theta)
   for (std::size_t k = 0; k < N; ++k) {
@@ -224,14 +227,14 @@ void RotatingStarModel::solve_potentials() {
   }
   auto solve_m1 = [&](std::vector<std::vector<double>>& u, std::vector<std::vector<double>>& du) {
     for (int l = 1; l <= p_.lmax; l += 2) {
-      RadialSolution r = solve_radial(l, dr_, project_m1(leg_, l, src, n));
+      RadialSolution r = solve_radial(l, r_, project_m1(leg_, l, src, n));
       u[l] = std::move(r.u);
       du[l] = std::move(r.du);
     }
   };
   auto solve_scalar = [&](std::vector<std::vector<double>>& u, std::vector<std::vector<double>>& du) {
     for (int l = 0; l <= p_.lmax; l += 2) {
-      RadialSolution r = solve_radial(l, dr_, project_scalar(leg_, l, src, n));
+      RadialSolution r = solve_radial(l, r_, project_scalar(leg_, l, src, n));
       u[l] = std::move(r.u);
       du[l] = std::move(r.du);
     }
@@ -242,7 +245,7 @@ void RotatingStarModel::solve_potentials() {
   std::vector<double> ar(N, 0.0), at(N, 0.0);
   for (int i = 1; i < n; ++i)
     for (int j = 0; j < nmu_; ++j) {
-      const double r = i * dr_, s2 = 1 - leg_.mu[j] * leg_.mu[j], s = std::sqrt(s2);
+      const double r = r_[i], s2 = 1 - leg_.mu[j] * leg_.mu[j], s = std::sqrt(s2);
       double a = 0, b = 0;
       for (int l = 1; l <= p_.lmax; l += 2) {
         a += (dx_l_[l][i] - x_l_[l][i] / r) * leg_.dP[l][j];
@@ -264,7 +267,7 @@ void RotatingStarModel::solve_potentials() {
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < nmu_; ++j) {
       const std::size_t k = std::size_t(i) * nmu_ + j;
-      const double r = i * dr_, s = std::sqrt(1 - leg_.mu[j] * leg_.mu[j]);
+      const double r = r_[i], s = std::sqrt(1 - leg_.mu[j] * leg_.mu[j]);
       double dps_r = 0, dps_t = 0, dap_r = 0, dap_t = 0;
       for (int l = 0; l <= p_.lmax; l += 2) {
         dps_r += dpsi_l_[l][i] * leg_.P[l][j];

@@ -16,9 +16,9 @@ using remnant::tov::polytrope_slice;
 
 void print(const char* name, const RnsGlobals& g) {
   std::printf("%s: M_K = %.7f M_ADM = %.7f M0 = %.7f Mp = %.7f J = %.6f T/W = %.6f re = %.5f rp/re = %.5f Rc = %.5f "
-              "Om = %.6f GRV2 = %.2e GRV3 = %.2e it = %d\n",
+              "Om = %.6f GRV2 = %.2e GRV3 = %.2e GRV2_GR = %.2e GRV3_GR = %.2e it = %d\n",
               name, g.M_komar, g.M_adm, g.M_rest, g.M_proper, g.J, g.T_over_W, g.r_e, g.axis_ratio, g.R_circ, g.omega_c,
-              g.grv2, g.grv3, g.iterations);
+              g.grv2, g.grv3, g.grv2_gr, g.grv3_gr, g.iterations);
 }
 
 // BU0 (K = 100, Gamma = 2, rho_c = 1.28e-3): the solver's error against the TOV ODE solution is
@@ -45,8 +45,10 @@ TEST(RnsSolver, NonRotatingLimitIsTheTovStar) {
     EXPECT_NEAR(g.R_circ, tov.areal_radius(), 3e-4);
     EXPECT_DOUBLE_EQ(g.axis_ratio, 1.0);
     EXPECT_EQ(g.J, 0.0);
-    EXPECT_LT(g.grv2, 1e-5);
-    EXPECT_LT(g.grv3, 1e-5);
+    EXPECT_LT(g.grv2, 3e-4 * scale);
+    EXPECT_LT(g.grv3, 2e-5 * scale);
+    EXPECT_LT(g.grv2_gr, 1e-5 * scale);
+    EXPECT_LT(g.grv3_gr, 1e-5 * scale);
     // Profiles: rho, psi, alpha at the same isotropic radius in several directions.
     double dprof = 0;
     for (double r : {0.0, 2.0, 5.0, 8.0, 12.0, 30.0})
@@ -63,8 +65,9 @@ TEST(RnsSolver, NonRotatingLimitIsTheTovStar) {
   }
 }
 
-// A rapidly rotating model (r_p/r_e = 0.7) at three radial resolutions: the global quantities
-// converge at second order; the default resolution is within 2e-5 of the finest.
+// A rapidly rotating model (r_p/r_e = 0.7) at three radial resolutions: the global quantities and
+// the xCFC virial identities converge at second order; at the default resolution (nr = 800) the
+// identities are below 1e-4.
 TEST(RnsSolver, GlobalQuantitiesConvergeAtSecondOrder) {
   const auto slice = polytrope_slice(100.0, 2.0, 0.5);
   RnsGlobals g[3];
@@ -87,10 +90,18 @@ TEST(RnsSolver, GlobalQuantitiesConvergeAtSecondOrder) {
   EXPECT_GT(oR, 1.5);
   EXPECT_NEAR(g[1].M_komar / g[2].M_komar, 1, 2e-5);
   EXPECT_NEAR(g[1].J / g[2].J, 1, 5e-5);
-  // xCFC is not GR: GRV2 measures the conformal-flatness error (O(Omega^2)), GRV3 (M_Komar = M_ADM)
-  // too; both are resolution-independent here.
-  EXPECT_LT(g[1].grv2, 5e-3);
-  EXPECT_LT(g[1].grv3, 5e-4);
+  const double o2 = std::log2(g[0].grv2 / g[1].grv2) / 1, o2b = std::log2(g[1].grv2 / g[2].grv2);
+  const double o3 = std::log2(g[1].grv3_gr / g[2].grv3_gr);
+  std::printf("GRV2 (xCFC) orders %.2f %.2f, GRV3_GR (M_Komar = M_ADM) order %.2f\n", o2, o2b, o3);
+  EXPECT_GT(o2b, 1.6);
+  EXPECT_GT(o3, 1.6);
+  EXPECT_LT(g[2].grv2, 1e-4);
+  EXPECT_LT(g[2].grv3, 1e-5);
+  EXPECT_LT(g[2].grv3_gr, 1e-6);
+  // GR's GRV2 does not converge to zero: xCFC drops the equation for ln(A N) that it tests, so it
+  // measures the conformal-flatness error (5.6e-4 here, 1.9e-4 at r_p/r_e = 0.9, 6.8e-4 at 0.58).
+  EXPECT_GT(g[2].grv2_gr, 3e-4);
+  EXPECT_LT(g[2].grv2_gr, 1e-3);
   EXPECT_NEAR(g[1].axis_ratio, 0.7, 1e-12);
   EXPECT_NEAR(g[1].omega_e, g[1].omega_c, 1e-15);
 }

@@ -60,8 +60,9 @@ MetricErrors run(int n, int steps, double xmax = 24) {
       const rotstar::RnsPoint q = model.at(r, std::acos(x[1] / r));
       e.psi = std::max(e.psi, std::abs(m.psi(i, j, k) - q.psi));
       e.alpha = std::max(e.alpha, std::abs(m.alpha(i, j, k) - q.alpha));
-      // XCFC's outer boundary admits a rigid rotation (beta^phi = const solves the homogeneous vector
-      // equation): compare beta^phi up to its offset at the cell nearest the origin.
+      // XCFC's beta^phi differs from the model's by a nearly uniform offset (a rigid rotation solves
+      // the homogeneous vector equation), which converges separately: compare beta^phi up to its
+      // offset at the first cell, and the offsets.
       const double db = m.beta(2, i, j, k) - q.beta_phi;  // cylindrical: phi is direction 2
       if (std::isnan(e.beta_offset)) e.beta_offset = db;
       e.beta = std::max(e.beta, std::abs(db - e.beta_offset));
@@ -81,10 +82,12 @@ TEST(RotatingStarThorn, XcfcReproducesTheEquilibriumMetric) {
               std::log2(a.beta / b.beta));
   EXPECT_LT(b.psi, 2e-4);
   EXPECT_LT(b.alpha, 3e-4);
-  EXPECT_LT(b.beta, 2e-4);
-  EXPECT_GT(std::log2(a.psi / b.psi), 1.4);
-  EXPECT_GT(std::log2(a.alpha / b.alpha), 1.2);
-  EXPECT_GT(std::log2(a.beta / b.beta), 1.0);
+  EXPECT_LT(b.beta, 1e-4);
+  EXPECT_LT(std::abs(b.beta_offset), 1e-4);
+  EXPECT_GT(std::log2(a.psi / b.psi), 1.7);
+  EXPECT_GT(std::log2(a.alpha / b.alpha), 1.7);
+  EXPECT_GT(std::log2(a.beta / b.beta), 1.5);
+  EXPECT_GT(std::log2(a.beta_offset / b.beta_offset), 1.4);
 }
 
 TEST(RotatingStarThorn, AFewStepsKeepTheCentralDensity) {

@@ -36,7 +36,7 @@ const char* kUsage =
     "usage: remnant-rotstar [--K=100] [--gamma=2] [--ye=0.5] | [--eos-table=FILE [--T=MeV] [--ye=YE]]\n"
     "                       --rho-c=RHO  (--omega=OMEGA | --axis-ratio=Q | --A2=A2 --omega-c=OMEGA_C | --A2=A2 --axis-ratio=Q)\n"
     "                       [--sequence=rho-c|axis-ratio|omega:FROM:TO:N --out=FILE.tsv]\n"
-    "                       [--nr=400] [--ntheta=24] [--lmax=20] [--r-out-factor=2] [--tolerance=1e-11]\n";
+    "                       [--nr=800] [--ntheta=24] [--lmax=20] [--r-out-factor=2] [--tolerance=1e-11]\n";
 
 double number(const std::string& key, const std::string& s) {
   char* end = nullptr;

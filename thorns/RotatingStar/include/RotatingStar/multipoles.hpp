@@ -3,7 +3,7 @@
 // Gauss-Legendre nodes in mu = cos(theta) on the upper half (equatorial symmetry), Legendre
 // polynomials and their mu-derivatives, and the radial Green's-function solve of
 //   u_l'' + 2 u_l' / r - l (l + 1) u_l / r^2 = s_l
-// on a uniform radial grid r_i = i dr, i = 0..N (trapezoidal cumulative integrals, second order),
+// on radial nodes 0 = r_0 < r_1 < ... < r_N (trapezoidal cumulative integrals, second order),
 // regular at r = 0 and decaying as r^-(l+1) outside (sources beyond r_N are neglected).
 // Scalars (psi, alpha psi) expand in P_l (even l); the phi components of vectors (X, beta) as
 // physical components r sin(theta) V^phi expand in sin(theta) P_l'(mu) (odd l), the m = 1
@@ -27,7 +27,7 @@ void legendre(int lmax, double mu, std::vector<double>& P, std::vector<double>& 
 struct RadialSolution {
   std::vector<double> u, du;
 };
-RadialSolution solve_radial(int l, double dr, const std::vector<double>& s);
+RadialSolution solve_radial(int l, const std::vector<double>& r, const std::vector<double>& s);
 
 // Projections of f(r_i, mu_j) (row-major [i][j] over the half nodes) onto multipoles:
 // scalar: f_l = (2l+1)/2 int f P_l dmu; m = 1: f_l = (2l+1)/(2l(l+1)) int f sin(theta) P_l' dmu.

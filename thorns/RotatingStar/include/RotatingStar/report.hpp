@@ -17,7 +17,7 @@ inline std::vector<std::pair<std::string, double>> global_rows(const RnsGlobals&
           {"r_e", g.r_e},             {"r_p", g.r_p},             {"R_circ", g.R_circ},
           {"axis_ratio", g.axis_ratio}, {"Omega_c", g.omega_c},   {"Omega_e", g.omega_e},
           {"alpha_c", g.alpha_c},     {"psi_c", g.psi_c},         {"GRV2", g.grv2},
-          {"GRV3", g.grv3},           {"iterations", double(g.iterations)}};
+          {"GRV3", g.grv3},           {"GRV2_GR", g.grv2_gr},     {"GRV3_GR", g.grv3_gr},           {"iterations", double(g.iterations)}};
 }
 
 }  // namespace remnant::rotstar
