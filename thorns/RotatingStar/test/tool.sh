@@ -18,7 +18,7 @@ check() {  # name, expected exit code, pattern expected in the output, command..
     echo "FAIL $name (exit $rc, expected $code; pattern '$pattern'):"; echo "$out" | head -5; fail=1
   else echo "ok   $name"; fi
 }
-check uniform 0 "^M_komar = 1\.529" "$exe" --K=100 --gamma=2 --rho-c=1.28e-3 --omega=0.02
+check uniform 0 "^M_komar = 1\.528" "$exe" --K=100 --gamma=2 --rho-c=1.28e-3 --omega=0.02
 check axis_ratio 0 "^axis_ratio = 0\.7$" "$exe" --rho-c=1.28e-3 --axis-ratio=0.7 --nr=200
 check j_constant 0 "^Omega_e = 0\.009" "$exe" --rho-c=1.28e-3 --A2=70 --omega-c=0.02575 --nr=200
 check beyond_shedding 1 "beyond mass shedding" "$exe" --rho-c=1.28e-3 --omega=0.04 --nr=200
