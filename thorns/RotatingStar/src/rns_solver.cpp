@@ -25,8 +25,6 @@ void check_parameters(const RnsParameters& p) {
   if (!(p.rho_central > 0)) throw RnsError(fmt("rho_central = %g must be positive", p.rho_central));
   if (!(p.omega >= 0)) throw RnsError(fmt("Omega = %g must be >= 0 (prograde rotation about +z)", p.omega));
   if (!(p.axis_ratio >= 0 && p.axis_ratio <= 1)) throw RnsError(fmt("axis ratio r_p/r_e = %g must be in (0, 1]", p.axis_ratio));
-  if (p.law == RotationLaw::j_constant && p.axis_ratio > 0)
-    throw RnsError("the axis-ratio target is implemented for uniform rotation; give Omega_c for the j-constant law");
   if (p.law == RotationLaw::j_constant && !(p.A2 > 0)) throw RnsError(fmt("A^2 = %g must be positive", p.A2));
   if (p.nr < 20 || p.n_theta < 2 || p.lmax < 0 || p.lmax >= 2 * p.n_theta || !(p.r_out_factor > 1.05))
     throw RnsError("resolution: need nr >= 20, n_theta >= 2, 0 <= lmax < 2 n_theta, r_out_factor > 1.05");
@@ -121,14 +119,19 @@ bool RotatingStarModel::matter_from_bernoulli(bool ramping) {
       const auto lr = local_rotation(p_.law, om, A2_, R, alpha, m.bphi);
       return lr ? C_ - std::log(alpha) + lr->bernoulli : 1.0;
     };
-    // H(r_e) rises with the rotation rate: bisect for H(r_e) = 0 (ratio 1: the static star, where
-    // the bisection would return round-off).
+    // H(r_e) rises with the rotation rate (Omega, or Omega_c of the j-constant law): bisect for
+    // H(r_e) = 0. Ratio 1 is the static star (the bisection would return round-off); while the
+    // metric is still too oblate for the target (H(r_e) > 0 without rotation) the star does not
+    // rotate this iteration, and a model that stays so fails the final check of r_e.
     double lo = 0, hi = 4 * (alpha / R - m.bphi) + 1e-300;
-    if (p_.axis_ratio < 1 && H_at_re(lo) > 0)
-      throw RnsError(fmt("axis ratio %g: the static star is already wider than r_p / ratio", p_.axis_ratio));
-    for (int it = 0; it < 200 && p_.axis_ratio < 1 && hi - lo > 1e-15 * hi; ++it)
-      (H_at_re(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
-    omega_ = p_.axis_ratio < 1 ? 0.5 * (lo + hi) : 0.0;
+    if (p_.law == RotationLaw::j_constant) hi *= 1 + std::sqrt(R * R / A2_);  // Omega_c > Omega(r_e)
+    if (p_.axis_ratio < 1 && H_at_re(lo) <= 0) {
+      while (H_at_re(hi) <= 0 && hi < 1e3) hi *= 2;
+      for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) (H_at_re(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
+      omega_ = 0.5 * (lo + hi);
+    } else {
+      omega_ = 0;
+    }
   }
   for (int j = 0; j < nmu_; ++j) {
     const double mu = leg_.mu[j], s = std::sqrt(1 - mu * mu);

@@ -142,6 +142,21 @@ TEST(RnsSolver, JConstantLaw) {
   const RotatingStarModel v(*slice, u);
   EXPECT_NEAR(n.globals().M_komar, v.globals().M_komar, 1e-5);
   EXPECT_NEAR(n.globals().omega_e, 0.02, 1e-5);
+  // The axis-ratio target finds Omega_c (frame dragging makes the fluid near the surface of a
+  // strongly differential star counter-rotate with respect to the ZAMOs: the law's root lies below
+  // -beta^phi there, which the solver must allow).
+  RnsParameters q;
+  q.law = RotationLaw::j_constant;
+  q.A2 = 70;
+  q.axis_ratio = m.globals().axis_ratio;
+  const RotatingStarModel w(*slice, q);
+  EXPECT_NEAR(w.globals().omega_c, 0.02575, 2e-5);
+  EXPECT_NEAR(w.globals().M_komar, m.globals().M_komar, 1e-5);
+  q.axis_ratio = 0.5;
+  const RotatingStarModel x(*slice, q);
+  print("j-constant A2 = 70, r_p/r_e = 0.5", x.globals());
+  EXPECT_LT(x.globals().grv2, 1e-4);
+  EXPECT_LT(x.globals().grv3, 1e-5);
 }
 
 // Beyond mass shedding and other bad parameters give an error, never a NaN model.

@@ -26,13 +26,14 @@ inline std::optional<LocalRotation> local_rotation(RotationLaw law, double omega
     out.omega = omega_c;
   } else {
     // F(Omega) = R^2 (Omega + beta) / (alpha^2 - R^2 (Omega + beta)^2) - A^2 (Omega_c - Omega) = 0:
-    // F rises monotonically in Omega between -beta (v = 0) and the light surface (v = 1).
+    // F rises monotonically from -inf to +inf between the light surfaces v = -1 and v = 1, so the
+    // root is unique (it lies below -beta, counter-rotating with respect to the ZAMOs, where frame
+    // dragging exceeds Omega_c's law).
     auto F = [&](double om) {
       const double v = velocity(om);
       return R * R * (om + beta_phi) / (alpha * alpha * (1 - v * v)) - A2 * (omega_c - om);
     };
-    double lo = -beta_phi, hi = -beta_phi + alpha / R * (1 - 1e-15);
-    if (F(lo) > 0) return std::nullopt;  // counter-rotation: outside the law's range
+    double lo = -beta_phi - alpha / R * (1 - 1e-15), hi = -beta_phi + alpha / R * (1 - 1e-15);
     for (int it = 0; it < 200 && hi - lo > 1e-15 * std::abs(hi); ++it) {
       const double mid = 0.5 * (lo + hi);
       (F(mid) > 0 ? hi : lo) = mid;
