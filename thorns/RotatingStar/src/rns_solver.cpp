@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <numbers>
 
 #include "RotatingStar/rns_solver.hpp"
@@ -60,6 +59,9 @@ RotatingStarModel::RotatingStarModel(const tov::ColdSlice& slice, const RnsParam
     f->assign(std::size_t(n) * nmu_, 0.0);
   solve();
   compute_globals();
+  const RnsGlobals& g = g_;
+  for (double v : {g.M_komar, g.M_adm, g.M_rest, g.J, g.r_e, g.r_p, g.R_circ, g.omega_c, g.omega_e, g.grv2, g.grv3})
+    if (!std::isfinite(v)) throw RnsError("the converged model has a non-finite global quantity: no equilibrium for these parameters");
 }
 
 void RotatingStarModel::evaluate_metric_on_grid() {
@@ -198,7 +200,6 @@ void RotatingStarModel::solve() {
     for (int l = 0; l <= p_.lmax; l += 2)
       for (int i = 0; i <= N_; ++i)
         change = std::max({change, std::abs(psi_l_[l][i] - psi_old[l][i]), std::abs(apsi_l_[l][i] - apsi_old[l][i])});
-    if (std::getenv("RNS_DEBUG")) std::fprintf(stderr, "it %d change %.3e psi_c %.8f apsi_c %.8f omega %.6f re %.5f rp %.5f\n", it, change, 1 + psi_l_[0][0], 1 + apsi_l_[0][0], omega_, r_e_, r_p_);
     if (!std::isfinite(change)) throw RnsError("the iteration produced NaN: no equilibrium for these parameters");
     if (!ramping && change < p_.tolerance) break;
   }
