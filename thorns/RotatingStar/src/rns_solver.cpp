@@ -185,7 +185,6 @@ void RotatingStarModel::solve() {
     else omega_ = f * target_omega;
     evaluate_metric_on_grid();
     matter_from_bernoulli(ramping);
-    const auto psi_old = psi_l_, apsi_old = apsi_l_;
     std::vector<std::vector<std::vector<double>>> old;
     const std::vector<std::vector<std::vector<double>>*> all{&psi_l_, &dpsi_l_, &apsi_l_, &dapsi_l_, &b_l_, &db_l_, &x_l_, &dx_l_};
     for (auto* a : all) old.push_back(*a);
@@ -199,7 +198,7 @@ void RotatingStarModel::solve() {
     change = 0;
     for (int l = 0; l <= p_.lmax; l += 2)
       for (int i = 0; i <= N_; ++i)
-        change = std::max({change, std::abs(psi_l_[l][i] - psi_old[l][i]), std::abs(apsi_l_[l][i] - apsi_old[l][i])});
+        change = std::max({change, std::abs(psi_l_[l][i] - old[0][l][i]), std::abs(apsi_l_[l][i] - old[2][l][i])});
     if (!std::isfinite(change)) throw RnsError("the iteration produced NaN: no equilibrium for these parameters");
     if (!ramping && change < p_.tolerance) break;
   }
