@@ -55,7 +55,7 @@ RotatingStarModel::RotatingStarModel(const tov::ColdSlice& slice, const RnsParam
     psi_l_[0][i] = t.psi - 1;
     apsi_l_[0][i] = t.alpha * t.psi - 1;
   }
-  for (auto* f : {&psi_, &apsi_, &bphi_, &H_, &rho_, &eps_, &press_, &ye_, &W_, &v_, &omega_f_, &aa_})
+  for (auto* f : {&psi_, &apsi_, &bphi_, &rho_, &eps_, &press_, &ye_, &W_, &v_, &omega_f_, &aa_})
     f->assign(std::size_t(n) * nmu_, 0.0);
   solve();
   compute_globals();
@@ -135,27 +135,33 @@ bool RotatingStarModel::matter_from_bernoulli(bool ramping) {
       omega_ = 0;
     }
   }
+  const double ye_outside = slice_.at(0).ye;
   for (int j = 0; j < nmu_; ++j) {
     const double mu = leg_.mu[j], s = std::sqrt(1 - mu * mu);
     bool inside = true;
     for (int i = 0; i <= N_; ++i) {
       const std::size_t k = std::size_t(i) * nmu_ + j;
+      if (!inside) {  // past the surface: no matter, and no root of the rotation law needed
+        rho_[k] = eps_[k] = press_[k] = v_[k] = omega_f_[k] = 0;
+        ye_[k] = ye_outside;
+        W_[k] = 1;
+        continue;
+      }
       const double r = r_[i], alpha = apsi_[k] / psi_[k];
       const auto lr = local_rotation(p_.law, omega_, A2_, psi_[k] * psi_[k] * r * s, alpha, bphi_[k]);
       const double H = lr ? C_ - std::log(alpha) + lr->bernoulli : -1.0;
-      H_[k] = H;
-      inside = inside && lr && H > 0 && i <= p_.nr;
+      inside = lr && H > 0 && i <= p_.nr;
       if (inside) {
         const tov::ColdState st = slice_.at(H);
         rho_[k] = st.rho, eps_[k] = st.eps, press_[k] = st.press, ye_[k] = st.ye;
         W_[k] = lr->W, v_[k] = lr->v, omega_f_[k] = lr->omega;
       } else {
         rho_[k] = eps_[k] = press_[k] = v_[k] = 0;
-        ye_[k] = slice_.at(0).ye;
+        ye_[k] = ye_outside;
         W_[k] = 1;
-        omega_f_[k] = lr ? lr->omega : 0;
+        omega_f_[k] = 0;
       }
-      if (i == p_.nr && inside && H > 0 && !ramping)
+      if (i == p_.nr && inside && !ramping)
         throw RnsError(fmt("no stellar surface inside r_out = %g along theta = %g: the rotation is beyond mass shedding or the star does not fit the grid (r_out_factor)",
                            r_out(), std::acos(mu)));
     }

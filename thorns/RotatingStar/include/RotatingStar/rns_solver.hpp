@@ -94,7 +94,7 @@ class RotatingStarModel {
   // with b = r sin(theta) beta^phi and x likewise for X (odd l); with r-derivatives.
   std::vector<std::vector<double>> psi_l_, dpsi_l_, apsi_l_, dapsi_l_, b_l_, db_l_, x_l_, dx_l_;
   // Grid fields [i * nmu + j] on the Gauss rays.
-  std::vector<double> psi_, apsi_, bphi_, H_, rho_, eps_, press_, ye_, W_, v_, omega_f_, aa_;
+  std::vector<double> psi_, apsi_, bphi_, rho_, eps_, press_, ye_, W_, v_, omega_f_, aa_;
   std::vector<double> surface_;  // surface radius at mu = k / (size - 1), for at()
   RnsGlobals g_;
 };
