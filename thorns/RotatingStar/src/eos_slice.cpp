@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "EOS/beta_equilibrium.hpp"
+#include "EOS/piecewise_polytrope.hpp"
 
 namespace remnant::rotstar {
 
@@ -31,7 +32,46 @@ double temperature(const eos::Tabulated<>& table, double T) {
   return T;
 }
 
+class PiecewisePolytropeSlice final : public tov::ColdSlice {
+ public:
+  PiecewisePolytropeSlice(double K0, const std::vector<double>& gammas, const std::vector<double>& rho_bounds, double ye)
+      : pp_(K0, gammas, rho_bounds), ye_(ye) {
+    // eps = a_i + K_i rho^(Gamma_i - 1) / (Gamma_i - 1) on piece i: a_i from the EOS at the piece's
+    // lower division; H at the divisions.
+    a_.assign(gammas.size(), 0.0);
+    for (std::size_t i = 1; i < gammas.size(); ++i) {
+      const double r = rho_bounds[i - 1];
+      a_[i] = pp_.eps(r) - pp_.K()[i] * std::pow(r, gammas[i] - 1) / (gammas[i] - 1);
+      H_bounds_.push_back(log_enthalpy(r));
+    }
+  }
+  tov::ColdState at(double H) const override {
+    std::size_t i = 0;
+    while (i < H_bounds_.size() && H >= H_bounds_[i]) ++i;
+    const double g = pp_.gammas()[i], K = pp_.K()[i];
+    // h = 1 + a_i + Gamma K rho^(Gamma - 1) / (Gamma - 1)
+    const double q = std::max(std::expm1(std::max(H, 0.0)) - a_[i], 0.0) * (g - 1) / (g * K);
+    tov::ColdState s;
+    s.rho = std::pow(q, 1 / (g - 1));
+    s.press = pp_.press(s.rho);
+    s.eps = s.rho > 0 ? pp_.eps(s.rho) : 0.0;
+    s.ye = ye_;
+    return s;
+  }
+  double log_enthalpy(double rho) const override { return std::log1p(pp_.eps(rho) + pp_.press(rho) / rho); }
+
+ private:
+  eos::PiecewisePolytrope pp_;
+  double ye_;
+  std::vector<double> a_, H_bounds_;
+};
+
 }  // namespace
+
+std::unique_ptr<tov::ColdSlice> piecewise_polytrope_slice(double K0, const std::vector<double>& gammas,
+                                                          const std::vector<double>& rho_bounds, double ye) {
+  return std::make_unique<PiecewisePolytropeSlice>(K0, gammas, rho_bounds, ye);
+}
 
 std::unique_ptr<tov::ColdSlice> beta_slice(const eos::Tabulated<>& table, double T) {
   const eos::BetaSlice s = eos::beta_equilibrium_slice(table, temperature(table, T), densities(table));

@@ -24,6 +24,16 @@ std::unique_ptr<tov::ColdSlice> make_slice(const Context& ctx) {
   if (ctx.param<std::string>("RotatingStar", "eos_slice") == "polytrope")
     return tov::polytrope_slice(ctx.param<double>("RotatingStar", "poly_K"), ctx.param<double>("RotatingStar", "poly_gamma"),
                                 ctx.param<double>("RotatingStar", "ye"));
+  if (ctx.param<std::string>("RotatingStar", "eos_slice") == "piecewise_polytrope") {
+    try {
+      return piecewise_polytrope_slice(ctx.param<double>("RotatingStar", "poly_K"),
+                                       ctx.param<std::vector<double>>("RotatingStar", "pwp_gammas"),
+                                       ctx.param<std::vector<double>>("RotatingStar", "pwp_rho_bounds"),
+                                       ctx.param<double>("RotatingStar", "ye"));
+    } catch (const std::runtime_error& e) {
+      throw RunError(std::string("RotatingStar::pwp_gammas, pwp_rho_bounds: ") + e.what());
+    }
+  }
   const auto* table = ctx.service<eos::EOS>("eos").tabulated();
   const std::string kind = ctx.param<std::string>("RotatingStar", "eos_slice");
   if (!table) throw RunError("RotatingStar::eos_slice = " + kind + " needs EOS::type = tabulated");
@@ -65,6 +75,8 @@ const RotatingStarModel& model_for(const Context& ctx) {
   for (const char* n : {"poly_K", "poly_gamma", "ye", "slice_T", "rho_central", "omega", "axis_ratio", "A2", "r_out_factor", "tolerance"})
     key += " " + std::to_string(ctx.param<double>("RotatingStar", n));
   for (const char* n : {"nr", "n_theta", "lmax"}) key += " " + std::to_string(ctx.param<std::int64_t>("RotatingStar", n));
+  for (const char* n : {"pwp_gammas", "pwp_rho_bounds"})
+    for (double v : ctx.param<std::vector<double>>("RotatingStar", n)) key += " " + std::string(n) + std::to_string(v);
   auto it = cache.find(key);
   if (it != cache.end()) return *it->second.model;
   Cached c;

@@ -21,6 +21,8 @@ check() {  # name, expected exit code, pattern expected in the output, command..
 check uniform 0 "^M_komar = 1\.528" "$exe" --K=100 --gamma=2 --rho-c=1.28e-3 --omega=0.02
 check axis_ratio 0 "^axis_ratio = 0\.7$" "$exe" --rho-c=1.28e-3 --axis-ratio=0.7 --nr=200
 check j_constant 0 "^Omega_e = 0\.009" "$exe" --rho-c=1.28e-3 --A2=70 --omega-c=0.02575 --nr=200
+check piecewise 0 "^M_komar = " "$exe" --K=100 --gammas=2,3 --rho-bounds=5e-4 --rho-c=1.28e-3 --axis-ratio=0.8 --nr=200
+check piecewise_bad 1 "Gammas need 1 density divisions" "$exe" --K=100 --gammas=2,3 --rho-c=1.28e-3 --omega=0.01 --nr=200
 check beyond_shedding 1 "beyond mass shedding" "$exe" --rho-c=1.28e-3 --omega=0.04 --nr=200
 check bad_number 2 "--omega=abc: not a number" "$exe" --rho-c=1.28e-3 --omega=abc
 check unknown_option 2 "unknown option --omgea" "$exe" --rho-c=1.28e-3 --omgea=0.01

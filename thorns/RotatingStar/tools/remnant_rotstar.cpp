@@ -2,6 +2,7 @@
 //   remnant-rotstar --K=100 --gamma=2 --rho-c=1.28e-3 --omega=0.02              uniform rotation
 //   remnant-rotstar --rho-c=1.28e-3 --axis-ratio=0.7                            Omega found
 //   remnant-rotstar --rho-c=1.28e-3 --A2=70 --omega-c=0.02575                   j-constant law
+//   remnant-rotstar --K=100 --gammas=2,3 --rho-bounds=5e-4 --rho-c=...          piecewise polytrope
 //   remnant-rotstar --eos-table=FILE --rho-c=... [--T=MeV] [--ye=YE]             table: beta equilibrium
 //                                                                               (or fixed Ye) at T_min (or T)
 //   remnant-rotstar ... --sequence=axis-ratio:1:0.6:9 --out=seq.tsv             a sequence (TSV)
@@ -33,7 +34,7 @@ struct UsageError : std::runtime_error {
 };
 
 const char* kUsage =
-    "usage: remnant-rotstar [--K=100] [--gamma=2] [--ye=0.5] | [--eos-table=FILE [--T=MeV] [--ye=YE]]\n"
+    "usage: remnant-rotstar [--K=100] [--gamma=2 | --gammas=G0,G1,.. --rho-bounds=R1,..] [--ye=0.5] | [--eos-table=FILE [--T=MeV] [--ye=YE]]\n"
     "                       --rho-c=RHO  (--omega=OMEGA | --axis-ratio=Q | --A2=A2 --omega-c=OMEGA_C | --A2=A2 --axis-ratio=Q)\n"
     "                       [--sequence=rho-c|axis-ratio|omega:FROM:TO:N --out=FILE.tsv]\n"
     "                       [--nr=800] [--ntheta=24] [--lmax=20] [--r-out-factor=2] [--tolerance=1e-11]\n";
@@ -57,7 +58,7 @@ int run(int argc, char** argv) {
     if (arg.rfind("--", 0) != 0 || eq == std::string::npos) throw UsageError("argument '" + arg + "': expected --name=value");
     opt[arg.substr(2, eq - 2)] = arg.substr(eq + 1);
   }
-  static const char* known[] = {"K", "gamma", "ye", "T", "eos-table", "rho-c", "omega", "omega-c", "A2", "axis-ratio",
+  static const char* known[] = {"K", "gamma", "gammas", "rho-bounds", "ye", "T", "eos-table", "rho-c", "omega", "omega-c", "A2", "axis-ratio",
                                 "sequence", "out", "nr", "ntheta", "lmax", "r-out-factor", "tolerance"};
   for (const auto& [k, v] : opt) {
     bool ok = false;
@@ -93,8 +94,22 @@ int run(int argc, char** argv) {
     table = std::make_unique<remnant::eos::Tabulated<>>(remnant::eos::load_table(opt["eos-table"]));
     const double T = get("T", -1);
     slice = opt.count("ye") ? fixed_ye_slice(*table, get("ye", 0), T) : beta_slice(*table, T);
+  } else if (opt.count("gammas")) {
+    if (opt.count("gamma")) throw UsageError("give --gamma (polytrope) or --gammas (piecewise polytrope), not both");
+    auto list = [&](const char* key) {
+      std::vector<double> v;
+      const std::string t = opt.count(key) ? opt[key] : "";
+      for (std::size_t a = 0, b; a < t.size(); a = b + 1) {
+        b = t.find(',', a);
+        if (b == std::string::npos) b = t.size();
+        v.push_back(number(key, t.substr(a, b - a)));
+      }
+      return v;
+    };
+    slice = piecewise_polytrope_slice(get("K", 100), list("gammas"), list("rho-bounds"), get("ye", 0.5));
   } else {
     if (opt.count("T")) throw UsageError("--T is for --eos-table");
+    if (opt.count("rho-bounds")) throw UsageError("--rho-bounds needs --gammas");
     slice = remnant::tov::polytrope_slice(get("K", 100), get("gamma", 2), get("ye", 0.5));
   }
   auto check_rho = [&](double rho) {

@@ -5,12 +5,17 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "EOS/tabulated.hpp"
 #include "TOV/cold_slice.hpp"
 
 namespace remnant::rotstar {
 
+// A cold piecewise polytrope (the EOS thorn's PiecewisePolytrope: K0 of the first piece, one Gamma per
+// piece, the increasing dividing densities), with rho(H) in closed form on each piece.
+std::unique_ptr<tov::ColdSlice> piecewise_polytrope_slice(double K0, const std::vector<double>& gammas,
+                                                          const std::vector<double>& rho_bounds, double ye);
 std::unique_ptr<tov::ColdSlice> beta_slice(const eos::Tabulated<>& table, double T = -1);
 std::unique_ptr<tov::ColdSlice> fixed_ye_slice(const eos::Tabulated<>& table, double ye, double T = -1);
 // Empty when rho_c lies inside the table's density range, else the error message.
