@@ -69,14 +69,20 @@ struct Cached {
   std::unique_ptr<RotatingStarModel> model;
 };
 
+std::string exact(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
 const RotatingStarModel& model_for(const Context& ctx) {
   static std::map<std::string, Cached> cache;  // key: the resolved parameters of this thorn
   std::string key = ctx.param<std::string>("RotatingStar", "eos_slice") + ctx.param<std::string>("RotatingStar", "rotation_law");
   for (const char* n : {"poly_K", "poly_gamma", "ye", "slice_T", "rho_central", "omega", "axis_ratio", "A2", "r_out_factor", "tolerance"})
-    key += " " + std::to_string(ctx.param<double>("RotatingStar", n));
+    key += " " + exact(ctx.param<double>("RotatingStar", n));
   for (const char* n : {"nr", "n_theta", "lmax"}) key += " " + std::to_string(ctx.param<std::int64_t>("RotatingStar", n));
   for (const char* n : {"pwp_gammas", "pwp_rho_bounds"})
-    for (double v : ctx.param<std::vector<double>>("RotatingStar", n)) key += " " + std::string(n) + std::to_string(v);
+    for (double v : ctx.param<std::vector<double>>("RotatingStar", n)) key += " " + std::string(n) + exact(v);
   auto it = cache.find(key);
   if (it != cache.end()) return *it->second.model;
   Cached c;
