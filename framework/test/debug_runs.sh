@@ -22,6 +22,7 @@ run bu0_cow bu0_cow.yaml MoL::max_iterations=3
 # Solves every other step: the metric extrapolation and recovery between solves run too.
 run bu0_dyn bu0_dyn.yaml MoL::max_iterations=4 XCFC::solve_every=2
 run migration_2d migration.yaml MoL::max_iterations=3 "Grid::ncells=[64,16,1]" "Grid::block_size=[16,16,1]"
+run rns_cyl_2d rns_uniform_cyl_2d.yaml MoL::max_iterations=3 RotatingStar::nr=200
 run shocktube shocktube_mm1.yaml MoL::max_iterations=3
 run wavetoy_3d wavetoy_3d.yaml MoL::max_iterations=3
 run advection_amr advection_cartesian_2d.yaml MoL::max_iterations=3
