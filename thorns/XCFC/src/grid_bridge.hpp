@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "XCFC/composite_multigrid.hpp"
+#include "XCFC/multigrid/composite_multigrid.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::xcfc {

@@ -11,7 +11,7 @@
 #include <array>
 #include <vector>
 
-#include "XCFC/multigrid.hpp"
+#include "XCFC/multigrid/multigrid.hpp"
 #include "XCFC/vector_poisson.hpp"
 
 namespace remnant::xcfc {

@@ -1,4 +1,4 @@
-#include "XCFC/structured_grid.hpp"
+#include "XCFC/multigrid/structured_grid.hpp"
 
 #include <numbers>
 

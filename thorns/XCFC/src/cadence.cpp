@@ -1,0 +1,110 @@
+#include "cadence.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+#include "runtime.hpp"
+#include "solve_sequence.hpp"
+
+namespace remnant::xcfc {
+namespace {
+
+// Between solves: the metric at the current time extrapolated linearly from the last two solves,
+// then the primitives recovered with the new psi (the densitised conserved variables are the
+// evolved ones). Holding the metric instead lags gravity by half a solve interval on average, which
+// acts as a damping force on the stellar oscillations (README, "Cadence").
+void extrapolate(Context& ctx) {
+  const std::optional<double> weight = extrapolation_weight(ctx);
+  if (!weight) return;
+  const double w = *weight;
+  const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < 5; ++c) {
+      Field m = b->field(metric, c), last = b->field(hist, c), before = b->field(hist, 5 + c);
+      for_interior(*b, [&](int i, int j, int k) { m(i, j, k) = last(i, j, k) + w * (last(i, j, k) - before(i, j, k)); });
+    }
+  recover_with_new_psi(ctx, MatterGroups::of(ctx));
+}
+
+}  // namespace
+
+std::optional<double> extrapolation_weight(Context& ctx) {
+  const Runtime& rt = runtime(ctx);
+  if (rt.history < 2 || !(rt.t_last > rt.t_before)) return std::nullopt;
+  return (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before);
+}
+
+void load_warm_start(Context& ctx, const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st) {
+  const std::optional<double> weight = extrapolation_weight(ctx);
+  const bool extrapolate = weight && *weight > 0;
+  const double w = extrapolate ? *weight : 0.0;
+  const int hist = ctx.var("XCFC::metric_history"), before = ctx.var("XCFC::potentials_before");
+  // last + w (last - before) of two fields of a block, per cell.
+  auto extrapolated = [w](Field last, Field prev) {
+    return [=](int i, int j, int k) { return last(i, j, k) + w * (last(i, j, k) - prev(i, j, k)); };
+  };
+  if (extrapolate) {
+    st.psi = br.gather_cells([&](Block& b) { return extrapolated(b.field(hist, 0), b.field(hist, 5)); });
+    st.alpha_psi = br.gather_cells([&](Block& b) {
+      const auto psi = extrapolated(b.field(hist, 0), b.field(hist, 5)), alpha = extrapolated(b.field(hist, 1), b.field(hist, 6));
+      return [=](int i, int j, int k) { return psi(i, j, k) * alpha(i, j, k); };
+    });
+  } else {
+    st.psi = br.gather(g.metric, 0);
+    st.alpha_psi = br.gather_cells([&](Block& b) {
+      const Field psi = b.field(g.metric, 0), alpha = b.field(g.metric, 1);
+      return [=](int i, int j, int k) { return psi(i, j, k) * alpha(i, j, k); };
+    });
+  }
+  auto potential = [&](int c) {
+    if (!extrapolate) return br.gather(potentials, c);
+    return br.gather_cells([&](Block& b) { return extrapolated(b.field(potentials, c), b.field(before, c)); });
+  };
+  for (int a = 0; a < 3; ++a) {
+    st.X_potentials.B[a] = potential(a);
+    st.beta_potentials.B[a] = potential(4 + a);
+  }
+  st.X_potentials.chi = potential(3);
+  st.beta_potentials.chi = potential(7);
+}
+
+void shift_potentials(Context& ctx, int potentials) {
+  const int before = ctx.var("XCFC::potentials_before");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < 8; ++c) {
+      Field p = b->field(potentials, c), q = b->field(before, c);
+      for_interior(*b, [&](int i, int j, int k) { q(i, j, k) = p(i, j, k); });
+    }
+}
+
+void record_history(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < 5; ++c) {
+      Field m = b->field(metric, c), last = b->field(hist, c), before = b->field(hist, 5 + c);
+      for_interior(*b, [&](int i, int j, int k) {
+        before(i, j, k) = last(i, j, k);
+        last(i, j, k) = m(i, j, k);
+      });
+    }
+  rt.t_before = rt.t_last;
+  rt.t_last = ctx.time();
+  rt.history = std::min(rt.history + 1, 2);
+  ++rt.solves;
+  rt.steps_since_solve = 0;
+}
+
+void evolution_step(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  const std::int64_t every = ctx.param<std::int64_t>("XCFC", "solve_every");
+  if (every <= 0) return;
+  ++rt.steps_since_solve;
+  if (rt.steps_since_solve >= every) return solve_sequence(ctx, false, "cadence");
+  if (ctx.param<std::string>("XCFC", "extrapolation") == "linear") extrapolate(ctx);
+  const double trigger = ctx.param<double>("XCFC", "residual_trigger");
+  if (trigger > 0 && psi_residual(ctx) > trigger) solve_sequence(ctx, false, "residual");
+}
+
+}  // namespace remnant::xcfc
