@@ -3,7 +3,6 @@
 // live beside it.
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 #include "cadence.hpp"
 #include "grid_bridge.hpp"
@@ -15,23 +14,18 @@
 namespace remnant::xcfc {
 namespace {
 
-// Before anything is computed: the Grid's boundaries must be ones the solver knows.
+// Before anything is computed: the grid's domain faces must be ones the solver knows.
 void check_parameters(Context& ctx) {
-  const int dim = ctx.grid().dimension();
-  const CoordinateSystem cs = ctx.grid().coordinates();
-  const auto& lo = ctx.param<std::vector<double>>("Grid", "xmin");
-  const auto& hi = ctx.param<std::vector<double>>("Grid", "xmax");
-  for (const char* side : {"boundary_lower", "boundary_upper"}) {
-    const auto& names = ctx.param<std::vector<std::string>>("Grid", side);
-    for (int d = 0; d < dim; ++d) {
-      const auto u = static_cast<std::size_t>(d);
+  const Domain domain = ctx.grid().domain();
+  for (int side = 0; side < 2; ++side)
+    for (int d = 0; d < domain.faces.dimension; ++d) {
       try {
-        (void)boundary_kind(names[u], d, cs, hi[u] - lo[u]);
+        check_face(domain, d, side);
       } catch (const std::invalid_argument& e) {
-        throw InputError(ctx.params().origin("Grid", side), e.what());
+        // The location of the Grid's parameter that set the face, for the message.
+        throw InputError(ctx.params().origin("Grid", side == 0 ? "boundary_lower" : "boundary_upper"), e.what());
       }
     }
-  }
 }
 
 }  // namespace

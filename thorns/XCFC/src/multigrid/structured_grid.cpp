@@ -11,29 +11,4 @@ Point3 GridShape::point(int i, int j, int k) const {
   return x;
 }
 
-bool GridShape::origin_flips_theta() const {
-  return !(dimension >= 2 && boundary[1][1] == Boundary::reflect);
-}
-
-bool GridShape::turns_phi() const {
-  if (dimension < 3 || coordinates == CoordinateSystem::cartesian) return false;
-  for (int d = 0; d < 2; ++d)
-    for (const Boundary b : boundary[d])
-      if (b == Boundary::axis || b == Boundary::origin) return true;
-  return false;
-}
-
-std::array<long long, 3> GridShape::image(std::array<long long, 3> I, int d, int side) const {
-  const long long m = n[d];
-  const Boundary kind = boundary[d][side];
-  if (kind == Boundary::periodic) {
-    I[d] = ((I[d] % m) + m) % m;
-    return I;
-  }
-  I[d] = side == 0 ? -1 - I[d] : 2 * m - 1 - I[d];
-  if (kind == Boundary::origin && used(1) && origin_flips_theta()) I[1] = n[1] - 1 - I[1];
-  if ((kind == Boundary::axis || kind == Boundary::origin) && turns_phi()) I[2] = ((I[2] + n[2] / 2) % n[2] + n[2]) % n[2];
-  return I;
-}
-
 }  // namespace remnant::xcfc
