@@ -109,5 +109,7 @@ REMNANT_REGISTER_THORN(GRMHD) {
   reg.function("GRMHD_InitialCons", initial_cons);
   reg.function("GRMHD_RHS", calc_rhs);
   reg.function("GRMHD_Con2Prim", con2prim);
+  reg.function("GRMHD_RecoverInitialPrimitives", con2prim);  // in XCFC's groups (thorn.yaml)
+  reg.function("GRMHD_RecoverWithNewMetric", con2prim);
   reg.inverse_dt_limit(inverse_dt);
 }

@@ -8,26 +8,6 @@
 #include "solve_sequence.hpp"
 
 namespace remnant::xcfc {
-namespace {
-
-// Between solves: the metric at the current time extrapolated linearly from the last two solves,
-// then the primitives recovered with the new psi (the densitised conserved variables are the
-// evolved ones). Holding the metric instead lags gravity by half a solve interval on average, which
-// acts as a damping force on the stellar oscillations (README, "Cadence").
-void extrapolate(Context& ctx) {
-  const std::optional<double> weight = extrapolation_weight(ctx);
-  if (!weight) return;
-  const double w = *weight;
-  const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
-  for (Block* b : ctx.grid().local_blocks())
-    for (int c = 0; c < 5; ++c) {
-      Field m = b->field(metric, c), last = b->field(hist, c), before = b->field(hist, 5 + c);
-      for_interior(*b, [&](int i, int j, int k) { m(i, j, k) = last(i, j, k) + w * (last(i, j, k) - before(i, j, k)); });
-    }
-  recover_with_new_psi(ctx, MatterGroups::of(ctx));
-}
-
-}  // namespace
 
 std::optional<double> extrapolation_weight(Context& ctx) {
   const Runtime& rt = runtime(ctx);
@@ -96,15 +76,61 @@ void record_history(Context& ctx) {
   rt.steps_since_solve = 0;
 }
 
-void evolution_step(Context& ctx) {
+void cadence(Context& ctx) {
   Runtime& rt = runtime(ctx);
+  rt.stage = Stage::idle;
   const std::int64_t every = ctx.param<std::int64_t>("XCFC", "solve_every");
   if (every <= 0) return;
   ++rt.steps_since_solve;
-  if (rt.steps_since_solve >= every) return solve_sequence(ctx, false, "cadence");
-  if (ctx.param<std::string>("XCFC", "extrapolation") == "linear") extrapolate(ctx);
+  if (rt.steps_since_solve >= every) {
+    rt.stage = Stage::solve, rt.reason = "cadence";
+    return;
+  }
+  rt.stage = ctx.param<std::string>("XCFC", "extrapolation") == "linear" ? Stage::extrapolate : Stage::check_trigger;
+}
+
+// Between solves: the metric at the current time extrapolated linearly from the last two solves;
+// the matter thorn then recovers the primitives with the new psi (the densitised conserved
+// variables are the evolved ones). Holding the metric instead lags gravity by half a solve interval
+// on average, which acts as a damping force on the stellar oscillations (README, "Cadence").
+void extrapolate(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  if (rt.stage != Stage::extrapolate) return;
+  rt.stage = Stage::check_trigger;
+  const std::optional<double> weight = extrapolation_weight(ctx);
+  if (!weight) return;
+  const double w = *weight;
+  const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < 5; ++c) {
+      Field m = b->field(metric, c), last = b->field(hist, c), before = b->field(hist, 5 + c);
+      for_interior(*b, [&](int i, int j, int k) { m(i, j, k) = last(i, j, k) + w * (last(i, j, k) - before(i, j, k)); });
+    }
+  rt.recovery_due = true;
+}
+
+void residual_trigger(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  if (rt.stage != Stage::check_trigger) return;
+  rt.stage = Stage::idle;
   const double trigger = ctx.param<double>("XCFC", "residual_trigger");
-  if (trigger > 0 && psi_residual(ctx) > trigger) solve_sequence(ctx, false, "residual");
+  if (trigger > 0 && psi_residual(ctx) > trigger) rt.stage = Stage::solve, rt.reason = "residual";
+}
+
+bool next_pass(Context& ctx) { return runtime(ctx).stage != Stage::idle; }
+
+bool recovery_due(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  const bool due = rt.recovery_due;
+  rt.recovery_due = false;
+  return due;
+}
+
+bool initial_pass(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  const bool first = !rt.initial_done;
+  rt.initial_done = true;
+  return first;
 }
 
 }  // namespace remnant::xcfc

@@ -1,8 +1,7 @@
 #include "matter_coupling.hpp"
 
-#include "Atmosphere/atmosphere.hpp"
 #include "Con2Prim/prim_to_cons.hpp"
-#include "GRMHD/con2prim_sweep.hpp"
+#include "GRMHD/grid_access.hpp"
 #include "Con2Prim/settings.hpp"
 #include "EOS/eos.hpp"
 
@@ -38,18 +37,6 @@ void store(Block& b, const MatterGroups& g, int i, int j, int k, const con2prim:
 
 MatterGroups MatterGroups::of(const Context& ctx) {
   return {ctx.var("GRMHD::cons"), ctx.var("GRMHD::prim"), ctx.var("Spacetime::metric")};
-}
-
-std::uint64_t recover_primitives(Context& ctx, const MatterGroups& g) {
-  // The same sweep GRMHD runs after every substep, now with the new psi in Spacetime::metric.
-  const auto& eos = ctx.service<eos::EOS>("eos");
-  const auto& s = ctx.service<con2prim::Settings>("con2prim");
-  const auto& atm = ctx.service<atmosphere::Atmosphere>("atmosphere");
-  const grmhd::Groups groups = grmhd::Groups::of(ctx);
-  con2prim::Diagnostics diag;
-  std::string first_fatal_cell;
-  for (Block* b : ctx.grid().local_blocks()) grmhd::recover_block(eos, s, atm, groups, *b, diag, first_fatal_cell);
-  return diag.fatal_cells;
 }
 
 void conserved_from_primitives(Context& ctx, const MatterGroups& g) {

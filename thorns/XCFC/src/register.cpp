@@ -34,8 +34,20 @@ void check_parameters(Context& ctx) {
 REMNANT_REGISTER_THORN(XCFC) {
   using namespace remnant::xcfc;
   reg.function("XCFC_CheckParameters", check_parameters);
-  reg.function("XCFC_Initial", initial_solve);
-  reg.function("XCFC_Solve", evolution_step);
+  // The initial metric (group XCFC_Initial, one pass).
+  reg.predicate("XCFC_InitialPass", initial_pass);
+  reg.function("XCFC_InitialConformalFactor", initial_conformal_factor);
+  reg.function("XCFC_InitialLapseAndShift", initial_lapse_and_shift);
+  // Every step: the cadence, then the passes of the group XCFC_Solve.
+  reg.function("XCFC_Cadence", cadence);
+  reg.predicate("XCFC_NextPass", next_pass);
+  reg.function("XCFC_Extrapolate", extrapolate);
+  reg.function("XCFC_VectorPotential", step_vector_potential);
+  reg.function("XCFC_ConformalFactor", step_conformal_factor);
+  reg.predicate("XCFC_RecoveryDue", recovery_due);
+  reg.function("XCFC_Lapse", step_lapse);
+  reg.function("XCFC_Shift", step_shift);
+  reg.function("XCFC_ResidualTrigger", residual_trigger);
   reg.persistent_state([](remnant::Context& ctx) { return save_persistent(runtime(ctx)); },
                        [](remnant::Context& ctx, const std::string& text) { restore_persistent(runtime(ctx), text); });
 }

@@ -12,7 +12,19 @@
 
 namespace remnant::xcfc {
 
+// One solve in progress between the scheduled steps (solve_sequence.cpp).
+struct SolveInProgress;
+
+// What the scheduled steps of XCFC_Solve do in the current pass (cadence.hpp): nothing more
+// (idle), a solve, the metric extrapolated in time, or the residual trigger's test.
+enum class Stage { idle, solve, extrapolate, check_trigger };
+
 struct Runtime {
+  Stage stage = Stage::idle;
+  const char* reason = "";                 // of the solve, for xcfc.tsv: cadence, residual, initial
+  bool recovery_due = false;               // psi changed: the matter thorn recovers the primitives
+  bool initial_done = false;               // XCFC_Initial ran its pass
+  std::shared_ptr<SolveInProgress> solve;  // between XCFC_VectorPotential and XCFC_Shift
   std::unique_ptr<XcfcSolver> solver;
   CompositeLayout layout;
   std::int64_t steps_since_solve = 0, solves = 0;

@@ -1,7 +1,5 @@
 #include "solve_sequence.hpp"
 
-#include <mpi.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -54,9 +52,11 @@ void store_lapse_shift(const GridBridge& br, const MatterGroups& g, int potentia
   br.scatter(st.beta_potentials.chi, potentials, 7);
 }
 
-// What every xCFC solve works with, set up from the warm start; finish() solves for alpha psi and
-// beta with the final matter and records the solve.
-struct Solve {
+}  // namespace
+
+// What every xCFC solve works with, set up from the warm start and kept in the runtime between the
+// scheduled steps.
+struct SolveInProgress {
   const std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
   XcfcSolver& sv;
   const GridBridge br;
@@ -65,29 +65,41 @@ struct Solve {
   const SolveSettings set;
   XcfcState st;
   XcfcStats stats;
+  Sources src;  // the matter sources of the current step
 
-  Solve(Context& ctx, bool initial)
+  SolveInProgress(Context& ctx, bool initial)
       : sv(solver(ctx)), br(ctx, sv.multigrid()), g(MatterGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
         set(settings(ctx, initial)) {
     load_warm_start(ctx, br, g, potentials, st);
   }
-
-  void finish(Context& ctx, const Sources& src, const char* reason) {
-    const CompositeField S =
-        br.gather_cells([&](Block& b) { return DensitisedStressTrace(b, g); });
-    sv.solve_lapse_and_shift(src.E, src.S, S, st, stats, set);
-    shift_potentials(ctx, potentials);
-    store_lapse_shift(br, g, potentials, st);
-    record_history(ctx);
-    warn_unconverged(ctx, stats);
-    write_tsv(ctx, reason, stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-  }
 };
 
+namespace {
+
+SolveInProgress* in_progress(Context& ctx) { return runtime(ctx).solve.get(); }
+
+// alpha psi with the final matter (after the recovery: it may have reset cells to atmosphere).
+void lapse(SolveInProgress& s) {
+  s.src = gather_sources(s.br, s.g);
+  const CompositeField S = s.br.gather_cells([&](Block& b) { return DensitisedStressTrace(b, s.g); });
+  s.sv.solve_lapse(s.src.E, S, s.st, s.stats, s.set);
+}
+
+// beta, then the solve stored, recorded and logged.
+void shift_and_finish(Context& ctx, SolveInProgress& s) {
+  s.sv.solve_shift(s.src.E, s.src.S, s.st, s.stats, s.set);
+  shift_potentials(ctx, s.potentials);
+  store_lapse_shift(s.br, s.g, s.potentials, s.st);
+  record_history(ctx);
+  warn_unconverged(ctx, s.stats);
+  Runtime& rt = runtime(ctx);
+  write_tsv(ctx, rt.reason, s.stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - s.t0).count());
+  rt.solve.reset();
+}
+
 // Initial data given as primitives: iterate psi with the primitives fixed (E~ = psi^6 E changes
-// with psi), then the lapse and shift.
-void solve_from_primitives(Context& ctx) {
-  Solve s(ctx, true);
+// with psi).
+void psi_from_primitives(Context& ctx, SolveInProgress& s) {
   const int max_iter = static_cast<int>(ctx.param<std::int64_t>("XCFC", "initial_iterations"));
   double change = 0;
   for (int it = 0; it < max_iter; ++it) {
@@ -105,32 +117,57 @@ void solve_from_primitives(Context& ctx) {
   std::snprintf(m, sizeof m, "XCFC: initial psi from the primitives, last change %.2e", change);
   ctx.info(m);
   conserved_from_primitives(ctx, s.g);
-  s.finish(ctx, gather_sources(s.br, s.g), "initial");
 }
 
 }  // namespace
 
-void recover_with_new_psi(Context& ctx, const MatterGroups& g) {
-  const std::uint64_t fatal = recover_primitives(ctx, g);
-  std::uint64_t total = 0;
-  MPI_Allreduce(&fatal, &total, 1, MPI_UINT64_T, MPI_SUM, ctx.comm());
-  if (total > 0) throw RunError("XCFC: a fatal error-policy rule fired in " + std::to_string(total) + " cells in the recovery with the new psi");
+void step_vector_potential(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  if (rt.stage != Stage::solve) return;
+  rt.solve = std::make_shared<SolveInProgress>(ctx, false);
+  SolveInProgress& s = *rt.solve;
+  s.src = gather_sources(s.br, s.g);
+  s.sv.solve_vector_potential(s.src.E, s.src.S, s.st, s.stats, s.set);
 }
 
-void solve_sequence(Context& ctx, bool initial, const char* reason) {
-  Solve s(ctx, initial);
-  const Sources src = gather_sources(s.br, s.g);
-  s.sv.solve_conformal_factor(src.E, src.S, s.st, s.stats, s.set);
-  s.br.scatter(s.st.psi, s.g.metric, 0);
-  recover_with_new_psi(ctx, s.g);
-  s.finish(ctx, gather_sources(s.br, s.g), reason);  // the recovery may have reset cells to atmosphere
+void step_conformal_factor(Context& ctx) {
+  SolveInProgress* s = in_progress(ctx);
+  if (!s) return;
+  s->sv.solve_psi(s->src.E, s->st, s->stats, s->set);
+  s->br.scatter(s->st.psi, s->g.metric, 0);
+  runtime(ctx).recovery_due = true;
 }
 
-void initial_solve(Context& ctx) {
-  runtime(ctx) = Runtime{};
+void step_lapse(Context& ctx) {
+  if (SolveInProgress* s = in_progress(ctx)) lapse(*s);
+}
+
+void step_shift(Context& ctx) {
+  SolveInProgress* s = in_progress(ctx);
+  if (!s) return;
+  shift_and_finish(ctx, *s);
+  runtime(ctx).stage = Stage::idle;
+}
+
+void initial_conformal_factor(Context& ctx) {
+  Runtime& rt = runtime(ctx);
   const std::string& mode = ctx.param<std::string>("XCFC", "initial_metric");
-  if (mode == "from_primitives") solve_from_primitives(ctx);
-  else if (mode == "from_conserved") solve_sequence(ctx, true, "initial");
+  if (mode == "keep") return;
+  rt.reason = "initial";
+  rt.solve = std::make_shared<SolveInProgress>(ctx, true);
+  SolveInProgress& s = *rt.solve;
+  if (mode == "from_primitives") return psi_from_primitives(ctx, s);
+  s.src = gather_sources(s.br, s.g);
+  s.sv.solve_conformal_factor(s.src.E, s.src.S, s.st, s.stats, s.set);
+  s.br.scatter(s.st.psi, s.g.metric, 0);
+  rt.recovery_due = true;
+}
+
+void initial_lapse_and_shift(Context& ctx) {
+  SolveInProgress* s = in_progress(ctx);
+  if (!s) return;
+  lapse(*s);
+  shift_and_finish(ctx, *s);
 }
 
 double psi_residual(Context& ctx) {
