@@ -77,6 +77,7 @@ Scheduler::Scheduler(const std::vector<const ThornSpec*>& thorns, const Variable
   for (const ThornSpec* t : thorns) {
     for (const auto& it : t->schedule) {
       if (!is_standard_bin(it.in) && !groups.count(it.in)) {
+        if (it.in_optional) continue;  // the hook's group belongs to an inactive thorn
         std::string msg = "'" + it.name + "' is scheduled in '" + it.in + "', which is neither a bin nor a group";
         auto near = nearest_names(it.in, containers, 3);
         if (!near.empty()) msg += " (did you mean " + join(near) + "?)";

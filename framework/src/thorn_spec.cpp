@@ -265,7 +265,13 @@ struct Reader {
       throw InputError(at(n), "a schedule entry needs 'function: <name>' or 'group: <name>'");
     }
     const std::string what = (s.is_group ? "group " : "function ") + s.name;
-    s.in = required(n, "in", what);
+    if (n["in"] && n["in"].IsMap()) {  // {name: <group>, optional: true}
+      check_keys(n["in"], {"name", "optional"}, what + ".in");
+      s.in = required(n["in"], "name", what + ".in");
+      if (n["in"]["optional"]) s.in_optional = boolean(n["in"]["optional"], "optional");
+    } else {
+      s.in = required(n, "in", what);
+    }
     s.before = ordering(n["before"], what + ".before");
     s.after = ordering(n["after"], what + ".after");
     s.reads = accesses(n["reads"], what + ".reads");

@@ -185,6 +185,35 @@ schedule:
   expect_error<InputError>([&] { bad_bin.make(); }, {"neither a bin nor a group", "did you mean evol"});
 }
 
+// A hook into another thorn's group (`in: {name: G, optional: true}`) runs inside G when that thorn
+// is active and is dropped when it is not; without `optional` a missing group stays an error.
+TEST(Scheduler, OptionalContainerIsAHookIntoAnotherThornsGroup) {
+  const char* matter = R"(thorn: Matter
+schedule:
+  - {function: Recover, in: {name: Recovery, optional: true}, description: hook}
+  - {function: Step, in: evol, description: always}
+)";
+  const char* solver = R"(thorn: Solver
+schedule:
+  - {group: Recovery, in: evol, after: [Step], description: the hook's group}
+)";
+  Harness alone{matter};
+  Scheduler s1 = alone.make();
+  Context c1(alone.params, alone.vars, MPI_COMM_WORLD);
+  s1.run_bin("evol", c1);
+  EXPECT_EQ(alone.calls, (std::vector<std::string>{"Matter::Step"}));
+  Harness both{matter, solver};
+  Scheduler s2 = both.make();
+  Context c2(both.params, both.vars, MPI_COMM_WORLD);
+  s2.run_bin("evol", c2);
+  EXPECT_EQ(both.calls, (std::vector<std::string>{"Matter::Step", "Matter::Recover"}));
+  Harness required{R"(thorn: Matter
+schedule:
+  - {function: Recover, in: {name: Recovery}, description: hook}
+)"};
+  expect_error<InputError>([&] { required.make(); }, {"neither a bin nor a group"});
+}
+
 TEST(Scheduler, EveryConditionAndRepeatedGroup) {
   Harness h{R"(thorn: M
 parameters:

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "remnant/coordinates.hpp"
+#include "remnant/domain.hpp"
 #include "remnant/variables.hpp"
 
 namespace remnant {
@@ -124,6 +125,9 @@ class GridDriver {
   virtual std::string describe() const = 0;
   virtual MPI_Comm comm() const = 0;
   virtual CoordinateSystem coordinates() const = 0;
+  // The domain (faces, level-0 cells, blocks, extent) for thorns that need its symmetries, e.g. an
+  // elliptic solver (remnant/domain.hpp).
+  virtual Domain domain() const { throw std::runtime_error("this grid does not describe its domain"); }
   // Every block of every rank in global (gid) order: what a checkpoint must store of the mesh.
   virtual std::vector<BlockKey> all_blocks() const = 0;
   // Recovery: rebuild the mesh with exactly these blocks (in this gid order), distributed over the

@@ -38,6 +38,8 @@ struct ScheduleItem {
   bool is_group = false;
   std::string name;             // function or group name
   std::string in;               // bin or group
+  bool in_optional = false;     // `in: {name: G, optional: true}`: dropped when no active thorn
+                                // schedules the group G (a hook of an optional thorn)
   std::vector<OrderingRef> before, after;
   std::vector<VariableAccess> reads, writes;
   int every = 1;                // run every N iterations (bins inside the evolution loop)

@@ -279,4 +279,19 @@ bool AmrGrid::move_to(std::vector<BlockKey> leaves) {
   return true;
 }
 
+Domain AmrGrid::domain() const {
+  Domain d;
+  d.faces.coordinates = config_.coordinates;
+  d.faces.dimension = config_.dimension;
+  for (std::size_t e = 0; e < 3; ++e) {
+    d.faces.boundary[e] = {config_.boundary_lower[e], config_.boundary_upper[e]};
+    const bool used = static_cast<int>(e) < config_.dimension;
+    d.cells[e] = used ? config_.ncells[e] : 1;
+    d.block_cells[e] = used ? config_.block_size[e] : 1;
+    d.lo[e] = config_.xmin[e];
+    d.hi[e] = config_.xmax[e];
+  }
+  return d;
+}
+
 }  // namespace remnant::grid

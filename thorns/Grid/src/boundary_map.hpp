@@ -1,5 +1,6 @@
 #pragma once
-// Where a ghost region's data come from. Every non-outflow domain face is an index map on the
+// Where a ghost region's data come from: the ghost images of the shared domain model
+// (remnant/domain.hpp) for the Grid's faces. Every non-outflow domain face is an index map on the
 // global point indices of a level: periodic faces shift, reflect/axis/origin faces mirror (the
 // origin also mirrors theta about pi/2, and in 3D the axis and origin shift phi by pi). A map
 // carries, per coordinate direction, the sign the coordinate basis vector picks up; the sign of a
@@ -10,34 +11,16 @@
 #include <optional>
 
 #include "Grid/grid_config.hpp"
+#include "remnant/domain.hpp"
 #include "remnant/variables.hpp"
 
 namespace remnant::grid {
 
 using Range = std::array<std::int64_t, 3>;
-
-// A box of global point indices on one level, [lo, hi) per direction.
-struct GlobalBox {
-  Range lo{0, 0, 0}, hi{1, 1, 1};
-  bool empty() const { return lo[0] >= hi[0] || lo[1] >= hi[1] || lo[2] >= hi[2]; }
-};
-GlobalBox intersect(const GlobalBox& a, const GlobalBox& b);
-
-// image(i)_d = sigma_d * i_d + shift_d.
-struct IndexMap {
-  std::array<int, 3> sigma{1, 1, 1};
-  Range shift{0, 0, 0};
-  std::array<int, 3> basis_sign{1, 1, 1};
-  bool mirrored = false;
-
-  std::int64_t apply(int d, std::int64_t i) const {
-    return sigma[static_cast<std::size_t>(d)] * i + shift[static_cast<std::size_t>(d)];
-  }
-  GlobalBox apply(const GlobalBox& b) const;
-  GlobalBox inverse(const GlobalBox& b) const;
-  bool preserves_orientation() const { return sigma[0] > 0 && sigma[1] > 0 && sigma[2] > 0; }
-  double sign(const ComponentSpec& c) const;
-};
+// Boxes of global point indices and their index maps: the shared domain model's.
+using remnant::GlobalBox;
+using remnant::IndexMap;
+using remnant::intersect;
 
 class BoundaryMaps {
  public:
@@ -51,6 +34,7 @@ class BoundaryMaps {
 
  private:
   GridConfig config_;
+  DomainFaces faces_;
   std::int64_t theta_cells_to_pi_ = 0;  // level 0 cells in [0, pi] (the origin's theta mirror)
 };
 

@@ -17,6 +17,7 @@ const char* to_string(Boundary b) {
     case Boundary::reflect: return "reflect";
     case Boundary::axis: return "axis";
     case Boundary::origin: return "origin";
+    case Boundary::interface: return "interface";
   }
   return "?";
 }

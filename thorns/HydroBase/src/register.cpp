@@ -26,4 +26,7 @@ void initial_cons(Context& ctx) {
 REMNANT_REGISTER_THORN(HydroBase) {
   using namespace remnant::hydrobase;
   reg.function("HydroBase_InitialCons", initial_cons);
+  // In XCFC's groups (thorn.yaml): the same sweep as the evolution's, with the new psi.
+  reg.function("HydroBase_RecoverInitialPrimitives", [](remnant::Context& ctx) { recover_all(ctx, "HydroBase_RecoverInitialPrimitives"); });
+  reg.function("HydroBase_RecoverWithNewMetric", [](remnant::Context& ctx) { recover_all(ctx, "HydroBase_RecoverWithNewMetric"); });
 }

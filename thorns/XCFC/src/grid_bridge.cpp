@@ -10,15 +10,16 @@
 
 namespace remnant::xcfc {
 
-Boundary boundary_kind(const std::string& name, int d, CoordinateSystem cs, double span) {
-  if (name == "outflow") return Boundary::outer;
-  if (name == "reflect") return Boundary::reflect;
-  if (name == "axis") return Boundary::axis;
-  if (name == "origin") return Boundary::origin;
+void check_face(const Domain& domain, int d, int side) {
+  const auto u = static_cast<std::size_t>(d);
+  const Boundary b = domain.faces.boundary[u][static_cast<std::size_t>(side)];
+  if (b == Boundary::outflow || b == Boundary::reflect || b == Boundary::axis || b == Boundary::origin) return;
   // Periodic is phi of a 3D cylindrical or spherical grid only: elsewhere there is no far field.
-  if (name == "periodic" && d == 2 && cs != CoordinateSystem::cartesian && std::abs(span - 2 * std::numbers::pi) < 1e-12)
-    return Boundary::periodic;
-  throw std::invalid_argument("XCFC: Grid boundary '" + name + "' in direction " + std::to_string(d) +
+  if (b == Boundary::periodic && d == 2 && domain.faces.coordinates != CoordinateSystem::cartesian &&
+      std::abs(domain.hi[u] - domain.lo[u] - 2 * std::numbers::pi) < 1e-12)
+    return;
+  throw std::invalid_argument(std::string("XCFC: Grid boundary '") + (b == Boundary::periodic ? "periodic" : "interface") +
+                              "' in direction " + std::to_string(d) +
                               " is not supported by the elliptic solver (allowed: outflow, reflect, axis, origin; "
                               "periodic only for phi over [0, 2 pi] of a 3D cylindrical or spherical grid: other "
                               "periodic domains have no far field)");
@@ -26,31 +27,26 @@ Boundary boundary_kind(const std::string& name, int d, CoordinateSystem cs, doub
 
 CompositeLayout layout_of_grid(const Context& ctx) {
   GridDriver& grid = ctx.grid();
+  const Domain domain = grid.domain();
   CompositeLayout lay;
   GridShape& s = lay.base;
-  s.coordinates = grid.coordinates();
-  s.dimension = grid.dimension();
-  const auto& n = ctx.param<std::vector<std::int64_t>>("Grid", "ncells");
-  const auto& nb = ctx.param<std::vector<std::int64_t>>("Grid", "block_size");
-  const auto& lo = ctx.param<std::vector<double>>("Grid", "xmin");
-  const auto& hi = ctx.param<std::vector<double>>("Grid", "xmax");
-  const auto& bl = ctx.param<std::vector<std::string>>("Grid", "boundary_lower");
-  const auto& bu = ctx.param<std::vector<std::string>>("Grid", "boundary_upper");
-  auto kind = [&](const std::string& k, int d) {
-    try {
-      return boundary_kind(k, d, s.coordinates, hi[static_cast<std::size_t>(d)] - lo[static_cast<std::size_t>(d)]);
-    } catch (const std::invalid_argument& e) {
-      throw RunError(e.what());
-    }
-  };
+  s.coordinates = domain.faces.coordinates;
+  s.dimension = domain.faces.dimension;
   for (int d = 0; d < 3; ++d) {
     const auto u = static_cast<std::size_t>(d);
     if (d < s.dimension) {
-      s.n[d] = static_cast<int>(n[u]);
-      s.lo[d] = lo[u];
-      s.dx[d] = (hi[u] - lo[u]) / s.n[d];
-      s.boundary[d] = {kind(bl[u], d), kind(bu[u], d)};
-      lay.patch_cells[d] = static_cast<int>(nb[u]);
+      for (int side = 0; side < 2; ++side) {
+        try {
+          check_face(domain, d, side);
+        } catch (const std::invalid_argument& e) {
+          throw RunError(e.what());
+        }
+      }
+      s.n[d] = static_cast<int>(domain.cells[u]);
+      s.lo[d] = domain.lo[u];
+      s.dx[d] = (domain.hi[u] - domain.lo[u]) / s.n[d];
+      s.boundary[d] = domain.faces.boundary[u];
+      lay.patch_cells[d] = domain.block_cells[u];
     } else {
       s.n[d] = 1;
       s.boundary[d] = {Boundary::outer, Boundary::outer};

@@ -9,16 +9,17 @@
 #include <string>
 #include <vector>
 
-#include "XCFC/composite_multigrid.hpp"
+#include "XCFC/multigrid/composite_multigrid.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::xcfc {
 
-// The solver's kind of a Grid boundary name in direction d (span: the direction's extent); throws
-// std::invalid_argument naming the allowed kinds.
-Boundary boundary_kind(const std::string& name, int d, CoordinateSystem cs, double span);
+// Throws std::invalid_argument naming the allowed kinds when the face (d, side) of the grid's domain
+// is one the elliptic solver cannot take.
+void check_face(const Domain& domain, int d, int side);
 
-// The composite layout of the Grid's forest; throws RunError for boundaries the solver lacks.
+// The composite layout of the Grid's forest (its domain from GridDriver::domain()); throws RunError
+// for faces the solver lacks.
 CompositeLayout layout_of_grid(const Context& ctx);
 
 class GridBridge {

@@ -3,7 +3,6 @@
 #include <cmath>
 
 #include "Con2Prim/prim_to_cons.hpp"
-#include "HydroBase/sweeps.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
 
@@ -39,18 +38,6 @@ void store(const Prim& prim, const Cons& cons, int i, int j, int k, const con2pr
 }  // namespace
 
 MatterGroups MatterGroups::of(const Context& ctx) { return {Cons::id(ctx), Prim::id(ctx), Metric::id(ctx)}; }
-
-std::uint64_t recover_primitives(Context& ctx, const MatterGroups& g) {
-  // The same sweep the evolution runs after every substep, now with the new psi in Spacetime::metric.
-  const auto& eos = ctx.service<eos::EOS>("eos");
-  const auto& s = ctx.service<con2prim::Settings>("con2prim");
-  const auto& atm = ctx.service<atmosphere::Atmosphere>("atmosphere");
-  const hydrobase::MatterGroups groups = hydrobase::MatterGroups::of(ctx);  // with the mass budget
-  con2prim::Diagnostics diag;
-  std::string first_fatal_cell;
-  for (Block* b : ctx.grid().local_blocks()) hydrobase::recover_block(eos, s, atm, groups, *b, diag, first_fatal_cell);
-  return diag.fatal_cells;
-}
 
 void conserved_from_primitives(Context& ctx, const MatterGroups& g) {
   for (Block* b : ctx.grid().local_blocks()) {

@@ -1,7 +1,8 @@
 #pragma once
 // The matter side of the xCFC sequence on the local blocks: the sources from HydroBase's densitised
-// conserved variables, the primitive recovery with the new psi (HydroBase's sweep), and the
-// conserved variables of given primitives (initial data), through the generated views.
+// conserved variables and the conserved variables of given primitives (initial data), through the
+// generated views. (The primitive recovery with the new psi is the matter thorn's, scheduled in the
+// group XCFC_RecoverPrimitives.)
 #include <cstdint>
 
 #include "remnant/context.hpp"
@@ -13,9 +14,6 @@ struct MatterGroups {
   static MatterGroups of(const Context& ctx);
 };
 
-// Recovers prim from cons with the metric's (new) psi; rewrites cons (atmosphere, policy). Returns
-// the number of cells where a fatal policy rule fired on this rank.
-std::uint64_t recover_primitives(Context& ctx, const MatterGroups& g);
 // cons = psi^6 * cons(prim, psi^4 f) on the interior.
 void conserved_from_primitives(Context& ctx, const MatterGroups& g);
 // S~ = psi^6 S = S^_i v^i + 3 psi^6 p per cell (S^_i the densitised momentum), on one block.

@@ -27,32 +27,16 @@ ScalarEquation cartesian_component_equation(const GridShape& s, int a) {
   } else if (axisymmetric && a < 2) {
     eq.mode = AngularMode::axisymmetric_m1;
   }
+  // B is a vector in Cartesian components: its parity at each face is that of its declared tensor
+  // type under the face's isometry (remnant/domain.hpp). On 3D grids the image across the axis or
+  // the origin is the physical point itself (phi turned by pi): Cartesian components are
+  // continuous there, only the equatorial mirror (theta kept at the origin) flips z. In 2D the
+  // image lies in the same meridional half-plane, i.e. the point at phi + pi seen from phi: x and
+  // y flip; the 1D origin is a point reflection. Mirror planes flip their normal component.
+  const ComponentSpec B = expand_tensor(TensorKind::vector, "B").at(static_cast<std::size_t>(a));
+  const DomainFaces faces = s.faces();
   for (int d = 0; d < 3; ++d)
-    for (int side = 0; side < 2; ++side) {
-      double p = 1;
-      switch (s.boundary[d][side]) {
-        case Boundary::outer:
-        case Boundary::periodic:
-        case Boundary::interface: break;
-        case Boundary::reflect:
-          // Cartesian planes flip the normal component; the spherical equator and the cylindrical
-          // z = 0 plane flip z.
-          p = (s.coordinates == CoordinateSystem::cartesian ? a == d : a == 2) ? -1 : 1;
-          break;
-        // On 3D grids the image across the axis or the origin is the physical point itself (phi
-        // turned by pi): Cartesian components are continuous there, only the equatorial mirror
-        // (theta kept at the origin) flips z. In 2D the image lies in the same meridional
-        // half-plane, i.e. the point at phi + pi seen from phi: x and y flip.
-        case Boundary::axis:
-          p = a < 2 && !s.turns_phi() ? -1 : 1;
-          break;
-        case Boundary::origin:  // point reflection (with the equatorial mirror where theta is kept)
-          if (s.turns_phi()) p = a == 2 && !s.origin_flips_theta() ? -1 : 1;
-          else p = s.dimension == 1 ? -1 : (a < 2 || !s.origin_flips_theta()) ? -1 : 1;
-          break;
-      }
-      eq.parity[d][side] = p;
-    }
+    for (int side = 0; side < 2; ++side) eq.parity[d][side] = cartesian_face_parity(faces, d, side, B, s.cell_counts());
   return eq;
 }
 

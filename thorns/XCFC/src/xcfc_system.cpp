@@ -91,12 +91,21 @@ void XcfcSolver::compute_A(XcfcState& st) {
 
 void XcfcSolver::solve_conformal_factor(const CompositeField& E, const VectorField& S_dn, XcfcState& st,
                                         XcfcStats& stats, const SolveSettings& settings) {
+  solve_vector_potential(E, S_dn, st, stats, settings);
+  solve_psi(E, st, stats, settings);
+}
+
+void XcfcSolver::solve_vector_potential(const CompositeField& E, const VectorField& S_dn, XcfcState& st,
+                                        XcfcStats& stats, const SolveSettings& settings) {
   // The vector residuals are measured against the gravitational source scale 2 pi max E~ as well:
   // a nearly static star has momenta at round-off level, which need no relative accuracy.
   SolveSettings vset = settings;
   vset.scale_floor = std::max(vset.scale_floor, max_abs_times(E, 2 * pi));
   stats.X = solve_vector_poisson(mg_, raise(mg_, S_dn, 8 * pi), st.X_potentials, st.X, vset);
   compute_A(st);
+}
+
+void XcfcSolver::solve_psi(const CompositeField& E, XcfcState& st, XcfcStats& stats, const SolveSettings& settings) {
   CompositeEquation eq;
   eq.boundary = conformal_factor_equation();
   eq.s1 = mg_.field();
@@ -126,6 +135,12 @@ double XcfcSolver::conformal_factor_residual(const CompositeField& E, const Xcfc
 
 void XcfcSolver::solve_lapse_and_shift(const CompositeField& E, const VectorField& S_dn, const CompositeField& S_trace,
                                        XcfcState& st, XcfcStats& stats, const SolveSettings& settings) {
+  solve_lapse(E, S_trace, st, stats, settings);
+  solve_shift(E, S_dn, st, stats, settings);
+}
+
+void XcfcSolver::solve_lapse(const CompositeField& E, const CompositeField& S_trace, XcfcState& st, XcfcStats& stats,
+                             const SolveSettings& settings) {
   CompositeEquation eq;
   eq.boundary = lapse_equation();
   eq.k = mg_.field();
@@ -135,7 +150,10 @@ void XcfcSolver::solve_lapse_and_shift(const CompositeField& E, const VectorFiel
   });
   if (st.alpha_psi.part.size() != eq.k.part.size()) st.alpha_psi = st.psi;
   stats.alpha_psi = mg_.solve(eq, st.alpha_psi, settings);
+}
 
+void XcfcSolver::solve_shift(const CompositeField& E, const VectorField& S_dn, XcfcState& st, XcfcStats& stats,
+                             const SolveSettings& settings) {
   // Shift source: 16 pi alpha psi^-6 f^ij S~_j + 2 A^ij d_j (alpha psi^-6).
   CompositeField w = mg_.field();
   for_every_cell(w, [&](std::size_t n, std::size_t q) {

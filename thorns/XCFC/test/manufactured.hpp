@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "XCFC/multigrid.hpp"
-#include "XCFC/structured_grid.hpp"
+#include "XCFC/multigrid/multigrid.hpp"
+#include "XCFC/multigrid/structured_grid.hpp"
 
 namespace remnant::xcfc::test {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "XCFC/composite_multigrid.hpp"
+#include "XCFC/multigrid/composite_multigrid.hpp"
 
 namespace remnant::xcfc::test {
 

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "XCFC/composite_multigrid.hpp"
+#include "XCFC/multigrid/composite_multigrid.hpp"
 #include "manufactured.hpp"
 #include "refined_layouts.hpp"
 

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 #include <cstdlib>
 
-#include "XCFC/multigrid.hpp"
+#include "XCFC/multigrid/multigrid.hpp"
 #include "manufactured.hpp"
 
 namespace {

@@ -9,8 +9,8 @@
 #include <cstring>
 #include <numbers>
 
-#include "XCFC/multigrid.hpp"
-#include "XCFC/composite_multigrid.hpp"
+#include "XCFC/multigrid/multigrid.hpp"
+#include "XCFC/multigrid/composite_multigrid.hpp"
 #include "manufactured.hpp"
 #include "refined_layouts.hpp"
 

@@ -45,6 +45,7 @@ class AmrGrid final : public GridDriver {
   std::string describe() const override;
   MPI_Comm comm() const override { return comm_; }
   CoordinateSystem coordinates() const override { return config_.coordinates; }
+  Domain domain() const override;
   std::vector<BlockKey> all_blocks() const override;
   void restore_blocks(std::span<const BlockKey> blocks) override;
   void correct_fluxes(std::span<const int> face_groups) override;

@@ -8,14 +8,16 @@
 #include <vector>
 
 #include "remnant/coordinates.hpp"
+#include "remnant/domain.hpp"
 
 namespace remnant::grid {
 
-// outflow: zero-gradient extrapolation. periodic: both sides. reflect: a mirror symmetry plane
-// (equator, octant), parities from the tensor type with the extra sign of axial vectors.
-// axis: the cylindrical axis R = 0 or the spherical axis theta = 0, pi. origin: r = 0. Axis and
-// origin ghosts are the cells across them (phi + pi in 3D), with the signs of the coordinate basis.
-enum class Boundary { outflow, periodic, reflect, axis, origin };
+// The face kinds are the shared domain model's (remnant/domain.hpp): outflow (zero-gradient
+// extrapolation here), periodic (both sides), reflect (a mirror symmetry plane: equator, octant;
+// parities from the tensor type with the extra sign of axial vectors), axis (the cylindrical axis
+// R = 0 or the spherical axis theta = 0, pi), origin (r = 0). Axis and origin ghosts are the cells
+// across them (phi + pi in 3D), with the signs of the coordinate basis. (interface is not a Grid face.)
+using remnant::Boundary;
 const char* to_string(Boundary b);
 
 // A static refinement region. box: coordinate ranges [lo_d, hi_d] (bounds = lo0 hi0 lo1 hi1 lo2

@@ -9,7 +9,7 @@
 #include <array>
 #include <vector>
 
-#include "XCFC/composite_multigrid.hpp"
+#include "XCFC/multigrid/composite_multigrid.hpp"
 
 namespace remnant::xcfc {
 

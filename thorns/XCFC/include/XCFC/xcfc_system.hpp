@@ -11,7 +11,7 @@
 #include <array>
 #include <vector>
 
-#include "XCFC/multigrid.hpp"
+#include "XCFC/multigrid/multigrid.hpp"
 #include "XCFC/vector_poisson.hpp"
 
 namespace remnant::xcfc {
@@ -46,6 +46,14 @@ class XcfcSolver {
   // Steps 5-6 (psi from step 3 in st). S_trace: S~.
   void solve_lapse_and_shift(const CompositeField& E, const VectorField& S_dn, const CompositeField& S_trace,
                              XcfcState& st, XcfcStats& stats, const SolveSettings& settings);
+  // The same steps one by one, as the schedule runs them (X^i and A^ij; psi; alpha psi; beta^i).
+  void solve_vector_potential(const CompositeField& E, const VectorField& S_dn, XcfcState& st, XcfcStats& stats,
+                              const SolveSettings& settings);
+  void solve_psi(const CompositeField& E, XcfcState& st, XcfcStats& stats, const SolveSettings& settings);
+  void solve_lapse(const CompositeField& E, const CompositeField& S_trace, XcfcState& st, XcfcStats& stats,
+                   const SolveSettings& settings);
+  void solve_shift(const CompositeField& E, const VectorField& S_dn, XcfcState& st, XcfcStats& stats,
+                   const SolveSettings& settings);
   // Residual of the psi equation for the current psi and these sources, relative to its sources
   // (the trigger of an early solve).
   double conformal_factor_residual(const CompositeField& E, const XcfcState& st);

@@ -4,7 +4,7 @@
 // for line relaxation and the MPI split of the relaxation units.
 #include <vector>
 
-#include "XCFC/composite_multigrid.hpp"
+#include "XCFC/multigrid/composite_multigrid.hpp"
 #include "composite_tier.hpp"
 
 namespace remnant::xcfc {

@@ -4,21 +4,19 @@
 // interior arrays have n0*n1*n2 entries. Unused directions have one cell.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "remnant/coordinates.hpp"
+#include "remnant/domain.hpp"
 
 namespace remnant::xcfc {
 
-// What lies beyond a face of the domain.
-enum class Boundary {
-  outer,    // far field: Robin (1/r^p fall-off) or Dirichlet values
-  reflect,  // symmetry plane (Cartesian planes, the spherical equator theta = pi/2)
-  axis,     // cylindrical R = 0, spherical theta = 0 or pi
-  origin,   // spherical r = 0
-  periodic, // phi of a 3D cylindrical or spherical grid (the full 2 pi)
-  interface // a refined patch's face inside the domain: its ghosts are filled by the composite
-            // solver (neighbour patches, coarse-fine interpolation) and held by the smoothers
-};
+// The face kinds of the shared domain model (remnant/domain.hpp). Boundary::outer (= outflow) is
+// the far field: Robin (1/r^p fall-off) or Dirichlet values; reflect, axis, origin take the field's
+// parity; periodic is phi of a 3D cylindrical or spherical grid (the full 2 pi); interface is a
+// refined patch's face inside the domain, whose ghosts are filled by the composite solver
+// (neighbour patches, coarse-fine interpolation) and held by the smoothers.
+using remnant::Boundary;
 
 struct GridShape {
   CoordinateSystem coordinates = CoordinateSystem::cartesian;
@@ -35,17 +33,23 @@ struct GridShape {
   // Where a cell's tensors are evaluated: unused theta is the equator, unused phi (2D axisymmetry)
   // the meridional half-plane phi = 0.
   Point3 point(int i, int j, int k) const;
+  // The faces as the shared domain model sees them (ghost images, parities).
+  DomainFaces faces() const { return {coordinates, dimension, boundary}; }
+  std::array<std::int64_t, 3> cell_counts() const { return {n[0], n[1], n[2]}; }
   // Point reflection through the spherical origin maps theta to pi - theta unless the domain ends
   // at the equator with a reflection (then the mirror cell has the same theta index).
-  bool origin_flips_theta() const;
+  bool origin_flips_theta() const { return faces().origin_flips_theta(); }
   // The cell whose value (times the field's parity at that face) the ghost I beyond the face
   // (d, side) takes: the mirror cell across a symmetry face, with theta flipped through the origin
   // and, on 3D grids, phi turned by pi across the axis or the origin; periodic faces wrap. I may lie
-  // beyond other faces too (those coordinates are kept).
-  std::array<long long, 3> image(std::array<long long, 3> I, int d, int side) const;
+  // beyond other faces too (those coordinates are kept). (DomainFaces::cell_image, with theta over
+  // [0, pi] where the origin flips it.)
+  std::array<long long, 3> image(std::array<long long, 3> I, int d, int side) const {
+    return faces().cell_image(I, d, side, cell_counts());
+  }
   // Whether phi is turned by pi across an axis or the origin (3D curvilinear grids): their phi
   // levels must keep an even cell count.
-  bool turns_phi() const;
+  bool turns_phi() const { return faces().turns_phi(); }
 };
 
 // Parity of a field at each symmetry face: +1 even, -1 odd. Outer faces ignore it.

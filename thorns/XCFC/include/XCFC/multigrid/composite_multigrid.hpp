@@ -19,7 +19,7 @@
 #include <memory>
 #include <vector>
 
-#include "XCFC/multigrid.hpp"
+#include "XCFC/multigrid/multigrid.hpp"
 
 namespace remnant::xcfc {
 

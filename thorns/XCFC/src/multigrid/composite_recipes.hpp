@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "XCFC/multigrid.hpp"
+#include "XCFC/multigrid/multigrid.hpp"
 
 namespace remnant::xcfc {
 

@@ -16,7 +16,7 @@
 #include <memory>
 #include <vector>
 
-#include "XCFC/structured_grid.hpp"
+#include "XCFC/multigrid/structured_grid.hpp"
 
 namespace remnant::xcfc {
 

@@ -1,0 +1,149 @@
+#include "cadence.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+#include "remnant/vars/Spacetime.hpp"
+#include "remnant/vars/XCFC.hpp"
+#include "runtime.hpp"
+#include "solve_sequence.hpp"
+
+namespace remnant::xcfc {
+
+using Metric = vars::Spacetime::metric;
+using History = vars::XCFC::metric_history;
+using Potentials = vars::XCFC::potentials;
+static_assert(History::idx::psi_before - History::idx::psi_last == Metric::ncomp &&
+                  History::idx::alpha_last - History::idx::psi_last == Metric::idx::alpha &&
+                  History::idx::beta_last - History::idx::psi_last == Metric::idx::beta,
+              "XCFC::metric_history holds two copies of Spacetime::metric's layout (thorn.yaml)");
+
+std::optional<double> extrapolation_weight(Context& ctx) {
+  const Runtime& rt = runtime(ctx);
+  if (rt.history < 2 || !(rt.t_last > rt.t_before)) return std::nullopt;
+  return (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before);
+}
+
+void load_warm_start(Context& ctx, const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st) {
+  const std::optional<double> weight = extrapolation_weight(ctx);
+  const bool extrapolate = weight && *weight > 0;
+  const double w = extrapolate ? *weight : 0.0;
+  const int hist = ctx.var("XCFC::metric_history"), before = ctx.var("XCFC::potentials_before");
+  // last + w (last - before) of two fields of a block, per cell.
+  auto extrapolated = [w](Field last, Field prev) {
+    return [=](int i, int j, int k) { return last(i, j, k) + w * (last(i, j, k) - prev(i, j, k)); };
+  };
+  if (extrapolate) {
+    st.psi = br.gather_cells([&](Block& b) { return extrapolated(b.field(hist, History::idx::psi_last), b.field(hist, History::idx::psi_before)); });
+    st.alpha_psi = br.gather_cells([&](Block& b) {
+      const auto psi = extrapolated(b.field(hist, History::idx::psi_last), b.field(hist, History::idx::psi_before)), alpha = extrapolated(b.field(hist, History::idx::alpha_last), b.field(hist, History::idx::alpha_before));
+      return [=](int i, int j, int k) { return psi(i, j, k) * alpha(i, j, k); };
+    });
+  } else {
+    st.psi = br.gather(g.metric, Metric::idx::psi);
+    st.alpha_psi = br.gather_cells([&](Block& b) {
+      const Field psi = b.field(g.metric, Metric::idx::psi), alpha = b.field(g.metric, Metric::idx::alpha);
+      return [=](int i, int j, int k) { return psi(i, j, k) * alpha(i, j, k); };
+    });
+  }
+  auto potential = [&](int c) {
+    if (!extrapolate) return br.gather(potentials, c);
+    return br.gather_cells([&](Block& b) { return extrapolated(b.field(potentials, c), b.field(before, c)); });
+  };
+  for (int a = 0; a < 3; ++a) {
+    st.X_potentials.B[a] = potential(Potentials::idx::XBx + a);
+    st.beta_potentials.B[a] = potential(Potentials::idx::betaBx + a);
+  }
+  st.X_potentials.chi = potential(Potentials::idx::Xchi);
+  st.beta_potentials.chi = potential(Potentials::idx::betachi);
+}
+
+void shift_potentials(Context& ctx, int potentials) {
+  const int before = ctx.var("XCFC::potentials_before");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < Potentials::ncomp; ++c) {
+      Field p = b->field(potentials, c), q = b->field(before, c);
+      for_interior(*b, [&](int i, int j, int k) { q(i, j, k) = p(i, j, k); });
+    }
+}
+
+void record_history(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < Metric::ncomp; ++c) {
+      Field m = b->field(metric, c), last = b->field(hist, History::idx::psi_last + c), before = b->field(hist, History::idx::psi_before + c);
+      // The first solve fills both slots: "before" is unused until a second solve is recorded,
+      // but it is declared written (and checkpointed), so it must hold defined values.
+      const Field& previous = rt.history == 0 ? m : last;
+      for_interior(*b, [&](int i, int j, int k) {
+        before(i, j, k) = previous(i, j, k);
+        last(i, j, k) = m(i, j, k);
+      });
+    }
+  rt.t_before = rt.t_last;
+  rt.t_last = ctx.time();
+  rt.history = std::min(rt.history + 1, 2);
+  ++rt.solves;
+  rt.steps_since_solve = 0;
+}
+
+void cadence(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  rt.stage = Stage::idle;
+  const std::int64_t every = ctx.param<std::int64_t>("XCFC", "solve_every");
+  if (every <= 0) return;
+  ++rt.steps_since_solve;
+  if (rt.steps_since_solve >= every) {
+    rt.stage = Stage::solve, rt.reason = "cadence";
+    return;
+  }
+  rt.stage = ctx.param<std::string>("XCFC", "extrapolation") == "linear" ? Stage::extrapolate : Stage::check_trigger;
+}
+
+// Between solves: the metric at the current time extrapolated linearly from the last two solves;
+// the matter thorn then recovers the primitives with the new psi (the densitised conserved
+// variables are the evolved ones). Holding the metric instead lags gravity by half a solve interval
+// on average, which acts as a damping force on the stellar oscillations (README, "Cadence").
+void extrapolate(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  if (rt.stage != Stage::extrapolate) return;
+  rt.stage = Stage::check_trigger;
+  const std::optional<double> weight = extrapolation_weight(ctx);
+  if (!weight) return;
+  const double w = *weight;
+  const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
+  for (Block* b : ctx.grid().local_blocks())
+    for (int c = 0; c < Metric::ncomp; ++c) {
+      Field m = b->field(metric, c), last = b->field(hist, History::idx::psi_last + c), before = b->field(hist, History::idx::psi_before + c);
+      for_interior(*b, [&](int i, int j, int k) { m(i, j, k) = last(i, j, k) + w * (last(i, j, k) - before(i, j, k)); });
+    }
+  rt.recovery_due = true;
+}
+
+void residual_trigger(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  if (rt.stage != Stage::check_trigger) return;
+  rt.stage = Stage::idle;
+  const double trigger = ctx.param<double>("XCFC", "residual_trigger");
+  if (trigger > 0 && psi_residual(ctx) > trigger) rt.stage = Stage::solve, rt.reason = "residual";
+}
+
+bool next_pass(Context& ctx) { return runtime(ctx).stage != Stage::idle; }
+
+bool recovery_due(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  const bool due = rt.recovery_due;
+  rt.recovery_due = false;
+  return due;
+}
+
+bool initial_pass(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  const bool first = !rt.initial_done;
+  rt.initial_done = true;
+  return first;
+}
+
+}  // namespace remnant::xcfc

@@ -1,0 +1,49 @@
+#pragma once
+// When XCFC solves and what the metric is in between (paper, "Spacetime Solvers"; README,
+// "Cadence"): a solve every XCFC::solve_every matter steps or when the psi residual exceeds
+// XCFC::residual_trigger; between solves the metric is held or extrapolated linearly in time from
+// the last two solves (XCFC::metric_history), and the warm starts of a solve are extrapolated alike.
+// The group XCFC_Solve (thorn.yaml) runs its steps in passes: XCFC_Extrapolate, the solve's steps
+// (solve_sequence.hpp) with the recovery group, XCFC_ResidualTrigger; a step whose stage is not
+// the current one does nothing.
+#include <optional>
+
+#include "XCFC/xcfc_system.hpp"
+#include "grid_bridge.hpp"
+#include "matter_coupling.hpp"
+#include "remnant/context.hpp"
+
+namespace remnant::xcfc {
+
+// The weight w of last + w (last - before) at the current time, or none before two solves.
+std::optional<double> extrapolation_weight(Context& ctx);
+
+// The warm starts: the last solve's psi, alpha psi and potentials, or, once two solves are
+// recorded, their linear extrapolation in time to now (w = (t - t_last) / (t_last - t_before)): the
+// change between solves is then left to second order, which saves V-cycles.
+void load_warm_start(Context& ctx, const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st);
+
+// XCFC::potentials (the last solve's) -> XCFC::potentials_before, before the new ones are stored.
+void shift_potentials(Context& ctx, int potentials);
+
+// Shifts XCFC::metric_history (last -> before), stores the metric just solved as the last and
+// counts the solve.
+void record_history(Context& ctx);
+
+// XCFC_Cadence (prestep, before the group XCFC_Solve): what this step's passes of XCFC_Solve do:
+// a solve when the cadence asks for one, else the extrapolation (XCFC::extrapolation = linear) or
+// only the residual trigger's test.
+void cadence(Context& ctx);
+// XCFC_Extrapolate: the metric extrapolated to the current time; the recovery is then due.
+void extrapolate(Context& ctx);
+// XCFC_ResidualTrigger: after the extrapolation (or hold), a solve in the next pass when the psi
+// residual with the current matter exceeds XCFC::residual_trigger.
+void residual_trigger(Context& ctx);
+
+// Predicates of the groups: XCFC_Solve repeats while a stage is pending; XCFC_RecoverPrimitives
+// runs once after psi changed; XCFC_Initial runs once.
+bool next_pass(Context& ctx);
+bool recovery_due(Context& ctx);
+bool initial_pass(Context& ctx);
+
+}  // namespace remnant::xcfc

@@ -1,0 +1,168 @@
+// The composite V-cycle (composite_impl.hpp): ghost filling from the recipes, relaxation of a tier's
+// patches (points, or zebra lines along runs and origin shells), residuals, quadratic interpolation
+// up from the coarse windows, the leaf residual and the restriction of the solution.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "boundary_ghosts.hpp"
+#include "composite_impl.hpp"
+#include "level_ops.hpp"
+#include "line_relaxation.hpp"
+#include "line_relaxation_3d.hpp"
+#include "point_relaxation.hpp"
+#include "shell_relaxation.hpp"
+
+namespace remnant::xcfc {
+
+void CompositeMultigrid::Impl::fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par) {
+  Tier& T = tiers[static_cast<std::size_t>(t)];
+  if (t == 0) return fill_ghosts(T.patches[0], eq, T.patches[0].u, false);
+  const Recipes& R = recipes_for(eq);
+  auto u = [&](int tier, int patch) -> const std::vector<double>& {
+    return tiers[static_cast<std::size_t>(tier)].patches[static_cast<std::size_t>(patch)].u;
+  };
+  for (std::size_t p = 0; p < T.patches.size(); ++p)
+    for (const Recipe& r : R.ghosts[static_cast<std::size_t>(t)][p])
+      T.patches[p].u[r.target] = evaluate(R, r, par, eq, false, u);
+}
+
+void CompositeMultigrid::Impl::relax(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
+  Tier& T = tiers[static_cast<std::size_t>(t)];
+  if (T.shape.dimension == 2 || curvilinear_3d()) return relax_lines(t, eq, par, sweeps);
+  const auto [u0, u1] = mine(T.points);
+  for (int sweep = 0; sweep < sweeps; ++sweep)
+    for (int colour = 0; colour < 2; ++colour) {
+      fill(t, eq, par);
+      for (std::size_t u = u0; u < u1; ++u) {
+        Level& P = T.patches[static_cast<std::size_t>(T.points.units[u][0])];
+        count(t, red_black_pass(P, full_range(P), colour));
+      }
+      exchange(T, T.points);
+    }
+}
+
+void CompositeMultigrid::Impl::relax_lines(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
+  Tier& T = tiers[static_cast<std::size_t>(t)];
+  const int dims = T.shape.dimension;
+  for (auto& runs : T.runs)
+    for (auto& R : runs) copy_unit<true>(T, R, &Level::f, false);
+  for (auto& R : T.shell) copy_unit<true>(T, R, &Level::f, false);
+  for (int sweep = 0; sweep < sweeps; ++sweep)
+    for (int d = 0; d < dims; ++d) {
+      fill(t, eq, par);
+      const auto& S = T.lines[static_cast<std::size_t>(d)];
+      const auto [u0, u1] = mine(S);
+      for (std::size_t u = u0; u < u1; ++u) {
+        auto& R = T.runs[static_cast<std::size_t>(d)][u];
+        copy_unit<true>(T, R, &Level::u, true);
+        for (int colour = 0; colour < 2; ++colour) {
+          if (dims == 2) {
+            const Lines ln(R.level, d);
+            count(t, line_pass(R.level, ln, colour, 0, ln.count));
+          } else {
+            count(t, line_pass_3d(R.level, eq, d, colour));
+          }
+        }
+        copy_unit<false>(T, R, &Level::u, false);
+      }
+      exchange(T, S);
+    }
+  for (auto& R : T.shell) {
+    fill(t, eq, par);
+    copy_unit<true>(T, R, &Level::u, true);
+    count(t, relax_inner_shells(R.level, eq, angular_shells(R.level)));
+    copy_unit<false>(T, R, &Level::u, false);
+  }
+}
+
+void CompositeMultigrid::Impl::residual(int t, const ScalarEquation& eq, const std::array<double, 64>& par) {
+  fill(t, eq, par);
+  for (auto& P : tiers[static_cast<std::size_t>(t)].patches) {
+    apply_operator(P, P.u, P.r, full_range(P));
+    for (std::size_t q = 0; q < P.cells(); ++q) P.r[q] = P.f[q] - P.r[q];
+  }
+}
+
+void CompositeMultigrid::Impl::vcycle(const ScalarEquation& eq, const std::array<double, 64>& par, const SolveSettings& s) {
+  const int L = static_cast<int>(tiers.size()) - 1;
+  for (int t = L; t >= 1; --t) {
+    relax(t, eq, par, s.pre_sweeps);
+    residual(t, eq, par);
+    Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
+    restrict_point_values(t);  // ghosts filled by residual()
+    // The restricted residual, kept in r of the coarse patches' covered cells.
+    restrict_tier(t, [&](std::size_t p, std::size_t q) { return T.patches[p].r[q]; },
+                  [&](std::size_t p, std::size_t q) -> double& { return C.patches[p].r[q]; });
+    fill(t - 1, eq, par);
+    for (std::size_t p = 0; p < C.patches.size(); ++p) {
+      Level& Q = C.patches[p];
+      std::vector<double>& Au = C.scratch[p];
+      Au.resize(Q.cells());
+      apply_operator(Q, Q.u, Au, full_range(Q));
+      const auto& cov = C.covered[p];
+      for (std::size_t q = 0; q < Q.cells(); ++q)
+        if (cov[q]) Q.f[q] = Au[q] + Q.r[q];
+      C.ubar[p] = Q.u;
+    }
+  }
+  // Base V-cycle.
+  Level& B = tiers[0].patches[0];
+  base_u.resize(B.cells());
+  for_cells(B, full_range(B), [&](std::size_t q, std::ptrdiff_t p) { base_u[q] = B.u[static_cast<std::size_t>(p)]; });
+  base.cycle(base_eq, base_u, B.f, s);
+  for_cells(B, full_range(B), [&](std::size_t q, std::ptrdiff_t p) { B.u[static_cast<std::size_t>(p)] = base_u[q]; });
+  for (int t = 1; t <= L; ++t) {
+    Tier& C = tiers[static_cast<std::size_t>(t - 1)];
+    for (std::size_t p = 0; p < C.patches.size(); ++p) {
+      const std::vector<double>& u = C.patches[p].u;
+      C.corr[p].resize(u.size());
+      for (std::size_t m = 0; m < u.size(); ++m) C.corr[p][m] = u[m] - C.ubar[p][m];
+    }
+    interpolate_up(t, eq, par, true, [&](int tier, int patch) -> const std::vector<double>& {
+      return tiers[static_cast<std::size_t>(tier)].corr[static_cast<std::size_t>(patch)];
+    });
+    relax(t, eq, par, s.post_sweeps);
+  }
+}
+
+CompositeMultigrid::Impl::LeafResidual CompositeMultigrid::Impl::leaf_residual(const ScalarEquation& eq, const std::array<double, 64>& par) {
+  double rmax = 0, smax = 0, excess = 0;
+  constexpr double ulps = 256 * std::numeric_limits<double>::epsilon();
+  for (int t = 0; t < static_cast<int>(tiers.size()); ++t) {
+    Tier& T = tiers[static_cast<std::size_t>(t)];
+    if (t == 0) {
+      Level& B = T.patches[0];
+      fill(0, eq, par);
+      apply_operator(B, B.u, B.r, full_range(B));
+      for (std::size_t q = 0; q < B.cells(); ++q) B.r[q] = -B.r[q];
+    } else {
+      for (auto& P : T.patches) std::fill(P.f.begin(), P.f.end(), 0.0);
+      residual(t, eq, par);
+    }
+    for (std::size_t p = 0; p < T.patches.size(); ++p) {
+      const Level& P = T.patches[p];
+      const Ops o(P);
+      for_cells(P, full_range(P), [&](std::size_t q, std::ptrdiff_t g) {
+        if (T.covered[p][q]) return;
+        const double u = P.u[static_cast<std::size_t>(g)];
+        double sc = std::abs(o.k[q] * u) + std::abs(o.s0[q]);
+        if (o.s1) sc += std::abs(o.s1[q] / u);
+        if (o.s7) sc += std::abs(o.s7[q] / std::pow(u, 7));
+        rmax = std::max(rmax, std::abs(P.r[q]));
+        excess = std::max(excess, std::abs(P.r[q]) - ulps * P.diagonal[q] * std::abs(u));
+        smax = std::max(smax, sc);
+      });
+    }
+  }
+  return {rmax, smax, excess};
+}
+
+void CompositeMultigrid::Impl::restrict_solution(const ScalarEquation& eq, const std::array<double, 64>& par) {
+  for (int t = static_cast<int>(tiers.size()) - 1; t >= 1; --t) {
+    fill(t, eq, par);
+    restrict_point_values(t);
+  }
+}
+
+}  // namespace remnant::xcfc

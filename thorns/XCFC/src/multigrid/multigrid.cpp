@@ -1,0 +1,244 @@
+// FAS multigrid (see include/XCFC/multigrid/multigrid.hpp): the level hierarchy, the equation
+// coefficients on every level and the public interface. Smoothing and cycles live beside it
+// (multigrid_smoothing.cpp, multigrid_cycles.cpp), kernels in boundary_ghosts (ghost cells),
+// line_relaxation (line solves), transfers (restriction and prolongation), level_ops (operator
+// helpers) and work_partition (the MPI split of the work: every cell update reads exactly the
+// values it reads in the serial code, in the same order, so results are bit-identical for any rank
+// count).
+#include <algorithm>
+#include <cmath>
+
+#include "boundary_ghosts.hpp"
+#include "level_ops.hpp"
+#include "line_relaxation.hpp"
+#include "line_relaxation_3d.hpp"
+#include "multigrid_impl.hpp"
+#include "transfers.hpp"
+
+namespace remnant::xcfc {
+
+namespace {
+// Whether direction d of a level is coarsened 2:1: an even count of at least 4. A periodic phi is
+// never coarsened (semi-coarsening): its coupling is strong next to the axis, where the cyclic phi
+// lines solve it, and weak far from it, where modes oscillating in phi but smooth in the other
+// directions must stay on the coarse levels (coarsening phi there stalled the V-cycle at 0.87 per
+// cycle for a TOV star on a cylindrical 64 x 64 x 8 grid).
+bool coarsens(const GridShape& s, int d) {
+  return s.n[d] % 2 == 0 && s.n[d] >= 4 && s.boundary[d][0] != Boundary::periodic;
+}
+}  // namespace
+
+Multigrid::Impl::Impl(const GridShape& shape, MPI_Comm c) : work(c) {
+  levels.emplace_back(shape);
+  {
+    const Level& L = levels[0];
+    frames.J.assign(L.ghosted_size, Matrix3{});
+    frames.f.assign(L.ghosted_size, Point3{1, 1, 1});
+    for (int k = -L.g[2]; k < shape.n[2] + L.g[2]; ++k)
+      for (int j = -L.g[1]; j < shape.n[1] + L.g[1]; ++j)
+        for (int i = -L.g[0]; i < shape.n[0] + L.g[0]; ++i) {
+          const Point3 x = shape.point(i, j, k);
+          const auto p = static_cast<std::size_t>(L.at(i, j, k));
+          frames.J[p] = coords::jacobian(shape.coordinates, x);
+          frames.f[p] = coords::metric_diagonal(shape.coordinates, x);
+        }
+  }
+  for (;;) {
+    const GridShape& s = levels.back().shape;
+    GridShape c = s;
+    bool coarsened = false;
+    std::array<int, 3> ratio{1, 1, 1};
+    for (int d = 0; d < 3; ++d)
+      if (s.used(d) && coarsens(s, d)) {
+        ratio[d] = 2;
+        c.n[d] = s.n[d] / 2;
+        c.dx[d] = 2 * s.dx[d];
+        coarsened = true;
+      }
+    if (!coarsened) break;
+    levels.back().ratio = ratio;
+    levels.emplace_back(c);
+  }
+  // Restriction weights: the fine volumes summed per coarse cell (in the order of restriction).
+  for (std::size_t l = 0; l + 1 < levels.size(); ++l) {
+    const Level& F = levels[l];
+    Level& C = levels[l + 1];
+    C.restrict_volume.assign(C.cells(), 0.0);
+    const GridShape& fs = F.shape;
+    for (int k = 0; k < fs.n[2]; ++k)
+      for (int j = 0; j < fs.n[1]; ++j)
+        for (int i = 0; i < fs.n[0]; ++i)
+          C.restrict_volume[C.cell(i / F.ratio[0], j / F.ratio[1], k / F.ratio[2])] += F.volume[F.cell(i, j, k)];
+  }
+  work.build(levels);
+  line_splits.resize(levels.size());
+}
+
+void Multigrid::Impl::add_mode_term(Level& L, AngularMode mode) {
+  L.k = L.k_eq;
+  if (mode == AngularMode::none) return;
+  const auto& mk = L.mode_k[static_cast<int>(mode)];
+  for (std::size_t q = 0; q < L.k.size(); ++q) L.k[q] += mk[q];
+}
+
+void Multigrid::Impl::set_fine_equation(const ScalarEquation& eq) {
+  Level& L0 = levels[0];
+  const std::size_t n = L0.cells();
+  auto copy = [&](const std::vector<double>& v, std::vector<double>& out) {
+    if (v.empty()) out.assign(n, 0.0);
+    else out.assign(v.begin(), v.end());
+  };
+  copy(eq.k, L0.k_eq);
+  copy(eq.s0, L0.s0);
+  if (eq.s1.empty()) L0.s1.clear(); else L0.s1.assign(eq.s1.begin(), eq.s1.end());
+  if (eq.s7.empty()) L0.s7.clear(); else L0.s7.assign(eq.s7.begin(), eq.s7.end());
+  add_mode_term(L0, eq.mode);
+  L0.f.assign(n, 0.0);
+  L0.r.resize(n);
+  if (L0.u.size() != L0.ghosted_size) L0.u.assign(L0.ghosted_size, 0.0);
+  L0.factored = false;
+  coarse_ready = false;
+}
+
+void Multigrid::Impl::set_coarse_equations(const ScalarEquation& eq) {
+  if (coarse_ready) return;
+  for (std::size_t l = 0; l + 1 < levels.size(); ++l) {
+    Level &F = levels[l], &C = levels[l + 1];
+    // Once per solve, by every rank: the coarse equations are complete everywhere.
+    const Range RF = work.full(l), RC = work.full(l + 1);
+    restrict_interior(F, C, F.k_eq, C.k_eq, RF, RC);
+    restrict_interior(F, C, F.s0, C.s0, RF, RC);
+    if (F.s1.empty()) C.s1.clear(); else restrict_interior(F, C, F.s1, C.s1, RF, RC);
+    if (F.s7.empty()) C.s7.clear(); else restrict_interior(F, C, F.s7, C.s7, RF, RC);
+    add_mode_term(C, eq.mode);
+    C.f.resize(C.cells());
+    C.r.resize(C.cells());
+    if (C.u.size() != C.ghosted_size) C.u.assign(C.ghosted_size, 0.0);
+  }
+  for (auto& L : levels) {
+    set_line_ends(L, eq);
+    if (L.shape.dimension == 3 && L.shape.coordinates != CoordinateSystem::cartesian) factor_lines_3d(L, eq);
+    else factor_lines(L);
+  }
+  coarse_ready = true;
+}
+
+void Multigrid::Impl::load(const std::vector<double>& u) {
+  Level& L = levels[0];
+  for_cells(L, full_range(L), [&](std::size_t q, std::ptrdiff_t p) { L.u[static_cast<std::size_t>(p)] = u[q]; });
+}
+
+void Multigrid::Impl::store(std::vector<double>& u) const {
+  const Level& L = levels[0];
+  for_cells(L, full_range(L), [&](std::size_t q, std::ptrdiff_t p) { u[q] = L.u[static_cast<std::size_t>(p)]; });
+}
+
+Multigrid::Multigrid(const GridShape& shape, MPI_Comm comm) : impl_(std::make_unique<Impl>(shape, comm)) {}
+Multigrid::~Multigrid() = default;
+Multigrid::Multigrid(Multigrid&&) noexcept = default;
+Multigrid& Multigrid::operator=(Multigrid&&) noexcept = default;
+
+const GridShape& Multigrid::shape() const { return impl_->levels[0].shape; }
+int Multigrid::levels() const { return static_cast<int>(impl_->levels.size()); }
+int Multigrid::distributed_levels() const {
+  int n = 0;
+  for (const auto& p : impl_->work.all_parts()) n += p.dist ? 1 : 0;
+  return n;
+}
+
+SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, const SolveSettings& s) {
+  Impl& m = *impl_;
+  const std::size_t n = m.levels[0].cells();
+  if (u.size() != n) u.assign(n, eq.nonlinear() ? 1.0 : 0.0);
+  m.set_fine_equation(eq);
+  m.load(u);
+  m.relaxed_fine = m.relaxed_all = 0;
+  SolveStats st;
+  Level& L = m.levels[0];
+  // No sources, no boundary values: the solution is zero (no cycles spent on round-off).
+  const bool trivial = !eq.dirichlet && eq.far_value == 0.0 && !eq.nonlinear() &&
+                       std::all_of(L.s0.begin(), L.s0.end(), [](double v) { return v == 0.0; });
+  if (trivial) {
+    std::fill(u.begin(), u.end(), 0.0);
+    st.converged = true;
+    return st;
+  }
+  // 1D: the whole level is one line, and a line solve is exact for linear equations (Newton for
+  // psi), so each "cycle" is one tridiagonal solve on the finest level.
+  const bool line_solve = s.direct_1d && L.shape.dimension == 1;
+  if (s.full_multigrid && !line_solve) m.full_multigrid(eq, s);
+  st.initial_residual = m.residual(0, eq);
+  double res = st.initial_residual;
+  auto scale = [&] {
+    const double sc = std::max(m.source_scale(0), s.scale_floor);
+    return sc > 0 ? sc : 1.0;
+  };
+  st.scale = scale();
+  // Round-off floor of the residual: the largest operator term times a few ulps. Near the spherical
+  // origin and axis the coefficients are large and a relative 1e-10 can lie below it.
+  auto floor = [&] {
+    const double m = L.max_diagonal;
+    double umax = 0;
+    for (double v : L.u) umax = std::max(umax, std::abs(v));
+    return 256 * std::numeric_limits<double>::epsilon() * m * umax;
+  };
+  const double noise = floor();
+  static const bool debug = std::getenv("XCFC_DEBUG") != nullptr;
+  while (res > std::max(s.tolerance * st.scale, noise) && st.cycles < s.max_cycles) {
+    m.set_coarse_equations(eq);
+    if (line_solve) m.smooth_lines(0, eq, 0);
+    else m.vcycle(0, eq, s);
+    ++st.cycles;
+    res = m.residual(0, eq);
+    st.scale = scale();
+    st.history.push_back(res);
+    if (debug) {
+      std::size_t at = 0;
+      for (std::size_t q = 0; q < L.r.size(); ++q) if (std::abs(L.r[q]) > std::abs(L.r[at])) at = q;
+      std::fprintf(stderr, "cycle %d residual %.3e at %zu (initial %.3e, target %.3e)\n", st.cycles, res, at, st.initial_residual, s.tolerance * st.scale);
+    }
+  }
+  st.residual = res;
+  st.converged = res <= std::max(s.tolerance * st.scale, noise);
+  st.factor = st.cycles > 0 && st.initial_residual > 0 ? std::pow(res / st.initial_residual, 1.0 / st.cycles) : 0.0;
+  st.relaxed_cells = m.relaxed_fine, st.relaxed_cells_all = m.relaxed_all;
+  m.work.replicate(0, L.u, true);  // the solution complete on every rank
+  m.store(u);
+  return st;
+}
+
+double Multigrid::residual_norm(const ScalarEquation& eq, const std::vector<double>& u) {
+  Impl& m = *impl_;
+  m.set_fine_equation(eq);
+  m.load(u);
+  return m.residual(0, eq);
+}
+
+std::vector<double> Multigrid::with_ghosts(const ScalarEquation& eq, const std::vector<double>& u) const {
+  const Level& L = impl_->levels[0];
+  std::vector<double> a(L.ghosted_size, 0.0);
+  for_cells(L, full_range(L), [&](std::size_t q, std::ptrdiff_t p) { a[static_cast<std::size_t>(p)] = u[q]; });
+  fill_ghosts(L, eq, a, false);
+  return a;
+}
+
+void Multigrid::prepare(const ScalarEquation& eq) { impl_->set_fine_equation(eq); }
+
+void Multigrid::cycle(const ScalarEquation& eq, std::vector<double>& u, const std::vector<double>& f,
+                      const SolveSettings& s) {
+  Impl& m = *impl_;
+  Level& L = m.levels[0];
+  m.load(u);
+  L.f.assign(f.begin(), f.end());
+  m.set_coarse_equations(eq);
+  if (s.direct_1d && L.shape.dimension == 1) m.smooth_lines(0, eq, 0);
+  else m.vcycle(0, eq, s);
+  m.work.replicate(0, L.u, true);
+  m.store(u);
+}
+
+std::ptrdiff_t Multigrid::ghosted_index(int i, int j, int k) const { return impl_->levels[0].at(i, j, k); }
+std::array<std::ptrdiff_t, 3> Multigrid::ghosted_strides() const { return impl_->levels[0].st; }
+const CellFrames& Multigrid::frames() const { return impl_->frames; }
+
+}  // namespace remnant::xcfc

@@ -1,0 +1,49 @@
+#pragma once
+// XCFC's per-simulation state, published on the Context as the service "XCFC::runtime" (so that
+// several simulations in one process, e.g. tests, do not share it). Everything a bit-identical
+// continuation needs is either on the grid (Spacetime::metric, XCFC::potentials: the warm starts;
+// XCFC::metric_history) or in the persistent counters saved with the checkpoint.
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "XCFC/xcfc_system.hpp"
+#include "remnant/context.hpp"
+
+namespace remnant::xcfc {
+
+// One solve in progress between the scheduled steps (solve_sequence.cpp).
+struct SolveInProgress;
+
+// What the scheduled steps of XCFC_Solve do in the current pass (cadence.hpp): nothing more
+// (idle), a solve, the metric extrapolated in time, or the residual trigger's test.
+enum class Stage { idle, solve, extrapolate, check_trigger };
+
+struct Runtime {
+  Stage stage = Stage::idle;
+  const char* reason = "";                 // of the solve, for xcfc.tsv: cadence, residual, initial
+  bool recovery_due = false;               // psi changed: the matter thorn recovers the primitives
+  bool initial_done = false;               // XCFC_Initial ran its pass
+  std::shared_ptr<SolveInProgress> solve;  // between XCFC_VectorPotential and XCFC_Shift
+  std::unique_ptr<XcfcSolver> solver;
+  CompositeLayout layout;
+  std::int64_t steps_since_solve = 0, solves = 0;
+  // Times of the last two solves and how many of XCFC::metric_history's two slots are filled.
+  double t_last = 0, t_before = 0;
+  int history = 0;
+  bool tsv_started = false;  // xcfc.tsv created (fresh run) or trimmed (recovered run) by this process
+  bool warned_theta = false;
+};
+
+// The simulation's runtime, published on first use.
+Runtime& runtime(Context& ctx);
+
+// The solver of the current mesh, rebuilt when the forest has changed (a regrid).
+XcfcSolver& solver(Context& ctx);
+
+// The persistent counters as text (solve times as hexadecimal floats: a restart extrapolates with
+// bit-identical weights) and back; restore throws RunError for text of another form.
+std::string save_persistent(const Runtime& rt);
+void restore_persistent(Runtime& rt, const std::string& text);
+
+}  // namespace remnant::xcfc
