@@ -26,7 +26,20 @@ void initial_cons(Context& ctx) {
 REMNANT_REGISTER_THORN(HydroBase) {
   using namespace remnant::hydrobase;
   reg.function("HydroBase_InitialCons", initial_cons);
-  // In XCFC's groups (thorn.yaml): the same sweep as the evolution's, with the new psi.
-  reg.function("HydroBase_RecoverInitialPrimitives", [](remnant::Context& ctx) { recover_all(ctx, "HydroBase_RecoverInitialPrimitives"); });
-  reg.function("HydroBase_RecoverWithNewMetric", [](remnant::Context& ctx) { recover_all(ctx, "HydroBase_RecoverWithNewMetric"); });
+  // In the metric solver's groups (thorn.yaml): the sources of its equations, and the same recovery
+  // sweep as the evolution's with the new psi (followed by the sources of the recovered matter).
+  reg.function("HydroBase_MatterSources", fill_matter_sources);
+  reg.function("HydroBase_InitialMatterSources", fill_matter_sources);
+  reg.function("HydroBase_ConservedFromPrimitives", [](remnant::Context& ctx) {
+    conserved_from_primitives(ctx);
+    fill_matter_sources(ctx);
+  });
+  reg.function("HydroBase_RecoverInitialPrimitives", [](remnant::Context& ctx) {
+    recover_all(ctx, "HydroBase_RecoverInitialPrimitives");
+    fill_matter_sources(ctx);
+  });
+  reg.function("HydroBase_RecoverWithNewMetric", [](remnant::Context& ctx) {
+    recover_all(ctx, "HydroBase_RecoverWithNewMetric");
+    fill_matter_sources(ctx);
+  });
 }

@@ -25,7 +25,7 @@ std::optional<double> extrapolation_weight(Context& ctx) {
   return (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before);
 }
 
-void load_warm_start(Context& ctx, const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st) {
+void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st) {
   const std::optional<double> weight = extrapolation_weight(ctx);
   const bool extrapolate = weight && *weight > 0;
   const double w = extrapolate ? *weight : 0.0;
@@ -96,10 +96,12 @@ void cadence(Context& ctx) {
   if (every <= 0) return;
   ++rt.steps_since_solve;
   if (rt.steps_since_solve >= every) {
-    rt.stage = Stage::solve, rt.reason = "cadence";
+    rt.stage = Stage::solve, rt.reason = "cadence", rt.sources_due = true;
     return;
   }
   rt.stage = ctx.param<std::string>("XCFC", "extrapolation") == "linear" ? Stage::extrapolate : Stage::check_trigger;
+  // The trigger's residual needs the sources of this step's matter.
+  rt.sources_due = ctx.param<double>("XCFC", "residual_trigger") > 0;
 }
 
 // Between solves: the metric at the current time extrapolated linearly from the last two solves;
@@ -127,7 +129,7 @@ void residual_trigger(Context& ctx) {
   if (rt.stage != Stage::check_trigger) return;
   rt.stage = Stage::idle;
   const double trigger = ctx.param<double>("XCFC", "residual_trigger");
-  if (trigger > 0 && psi_residual(ctx) > trigger) rt.stage = Stage::solve, rt.reason = "residual";
+  if (trigger > 0 && psi_residual(ctx) > trigger) rt.stage = Stage::solve, rt.reason = "residual", rt.sources_due = true;
 }
 
 bool next_pass(Context& ctx) { return runtime(ctx).stage != Stage::idle; }
@@ -137,6 +139,26 @@ bool recovery_due(Context& ctx) {
   const bool due = rt.recovery_due;
   rt.recovery_due = false;
   return due;
+}
+
+// Runs the group once and clears the flag (a "run if" for the matter thorn's hook groups).
+bool take(bool& flag) {
+  const bool due = flag;
+  flag = false;
+  return due;
+}
+
+bool sources_due(Context& ctx) { return take(runtime(ctx).sources_due); }
+
+bool initial_sources_due(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  if (rt.initial_sources_taken) return false;
+  rt.initial_sources_taken = true;
+  return ctx.param<std::string>("XCFC", "initial_metric") == "from_conserved";
+}
+
+bool psi_iteration_due(Context& ctx) {
+  return ctx.param<std::string>("XCFC", "initial_metric") == "from_primitives" && !runtime(ctx).psi_iteration.done;
 }
 
 bool initial_pass(Context& ctx) {

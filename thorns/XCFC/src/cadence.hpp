@@ -10,7 +10,7 @@
 
 #include "XCFC/xcfc_system.hpp"
 #include "grid_bridge.hpp"
-#include "matter_coupling.hpp"
+#include "spacetime_groups.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::xcfc {
@@ -21,7 +21,7 @@ std::optional<double> extrapolation_weight(Context& ctx);
 // The warm starts: the last solve's psi, alpha psi and potentials, or, once two solves are
 // recorded, their linear extrapolation in time to now (w = (t - t_last) / (t_last - t_before)): the
 // change between solves is then left to second order, which saves V-cycles.
-void load_warm_start(Context& ctx, const GridBridge& br, const MatterGroups& g, int potentials, XcfcState& st);
+void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st);
 
 // XCFC::potentials (the last solve's) -> XCFC::potentials_before, before the new ones are stored.
 void shift_potentials(Context& ctx, int potentials);
@@ -45,5 +45,11 @@ void residual_trigger(Context& ctx);
 bool next_pass(Context& ctx);
 bool recovery_due(Context& ctx);
 bool initial_pass(Context& ctx);
+// XCFC_MatterSources runs before a solve (and before the residual trigger's test);
+// XCFC_InitialMatterSources once for initial data given as conserved variables;
+// XCFC_InitialPsiFromPrimitives repeats until the psi iteration of from_primitives is done.
+bool sources_due(Context& ctx);
+bool initial_sources_due(Context& ctx);
+bool psi_iteration_due(Context& ctx);
 
 }  // namespace remnant::xcfc

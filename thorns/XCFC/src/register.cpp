@@ -36,12 +36,16 @@ REMNANT_REGISTER_THORN(XCFC) {
   reg.function("XCFC_CheckParameters", check_parameters);
   // The initial metric (group XCFC_Initial, one pass).
   reg.predicate("XCFC_InitialPass", initial_pass);
+  reg.predicate("XCFC_InitialSourcesDue", initial_sources_due);
+  reg.predicate("XCFC_PsiIterationDue", psi_iteration_due);
+  reg.function("XCFC_InitialPsiIteration", initial_psi_iteration);
   reg.function("XCFC_InitialConformalFactor", initial_conformal_factor);
   reg.function("XCFC_InitialLapseAndShift", initial_lapse_and_shift);
   // Every step: the cadence, then the passes of the group XCFC_Solve.
   reg.function("XCFC_Cadence", cadence);
   reg.predicate("XCFC_NextPass", next_pass);
   reg.function("XCFC_Extrapolate", extrapolate);
+  reg.predicate("XCFC_SourcesDue", sources_due);
   reg.function("XCFC_VectorPotential", step_vector_potential);
   reg.function("XCFC_ConformalFactor", step_conformal_factor);
   reg.predicate("XCFC_RecoveryDue", recovery_due);

@@ -24,6 +24,13 @@ struct Runtime {
   const char* reason = "";                 // of the solve, for xcfc.tsv: cadence, residual, initial
   bool recovery_due = false;               // psi changed: the matter thorn recovers the primitives
   bool initial_done = false;               // XCFC_Initial ran its pass
+  bool sources_due = false;                // the matter thorn fills Spacetime::matter_sources
+  bool initial_sources_taken = false;      // XCFC_InitialMatterSources ran (or was skipped)
+  // XCFC::initial_metric = from_primitives: psi iterations done, the last pass, the loop finished.
+  struct PsiIteration {
+    int count = 0;
+    bool final_pass = false, done = false;
+  } psi_iteration;
   std::shared_ptr<SolveInProgress> solve;  // between XCFC_VectorPotential and XCFC_Shift
   std::unique_ptr<XcfcSolver> solver;
   CompositeLayout layout;

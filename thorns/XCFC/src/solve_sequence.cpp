@@ -10,7 +10,6 @@
 #include "XCFC/xcfc_system.hpp"
 #include "cadence.hpp"
 #include "grid_bridge.hpp"
-#include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
 #include "remnant/vars/XCFC.hpp"
 #include "runtime.hpp"
@@ -19,7 +18,7 @@
 namespace remnant::xcfc {
 namespace {
 
-using Cons = vars::HydroBase::cons;
+using MatterSources = vars::Spacetime::matter_sources;
 using Metric = vars::Spacetime::metric;
 using Potentials = vars::XCFC::potentials;
 
@@ -38,18 +37,14 @@ struct Sources {
   VectorField S;
 };
 
-Sources gather_sources(const GridBridge& br, const MatterGroups& g) {
+Sources gather_sources(const GridBridge& br, const SpacetimeGroups& g) {
   Sources s;
-  s.E = br.gather_cells([&](Block& b) {
-    const Cons cons(b, g.cons);
-    const Field D = cons.field(Cons::idx::D), tau = cons.field(Cons::idx::tau);
-    return [=](int i, int j, int k) { return D(i, j, k) + tau(i, j, k); };
-  });
-  for (int d = 0; d < 3; ++d) s.S[d] = br.gather(g.cons, Cons::idx::S + d);
+  s.E = br.gather(g.sources, MatterSources::idx::E);
+  for (int d = 0; d < 3; ++d) s.S[d] = br.gather(g.sources, MatterSources::idx::S + d);
   return s;
 }
 
-void store_lapse_shift(const GridBridge& br, const MatterGroups& g, int potentials, const XcfcState& st) {
+void store_lapse_shift(const GridBridge& br, const SpacetimeGroups& g, int potentials, const XcfcState& st) {
   br.scatter(st.alpha(), g.metric, Metric::idx::alpha);
   for (int d = 0; d < 3; ++d) br.scatter(st.beta[d], g.metric, Metric::idx::beta + d);
   for (int a = 0; a < 3; ++a) {
@@ -68,7 +63,7 @@ struct SolveInProgress {
   const std::chrono::steady_clock::time_point t0 = std::chrono::steady_clock::now();
   XcfcSolver& sv;
   const GridBridge br;
-  const MatterGroups g;
+  const SpacetimeGroups g;
   const int potentials;
   const SolveSettings set;
   XcfcState st;
@@ -76,7 +71,7 @@ struct SolveInProgress {
   Sources src;  // the matter sources of the current step
 
   SolveInProgress(Context& ctx, bool initial)
-      : sv(solver(ctx)), br(ctx, sv.multigrid()), g(MatterGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
+      : sv(solver(ctx)), br(ctx, sv.multigrid()), g(SpacetimeGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
         set(settings(ctx, initial)) {
     load_warm_start(ctx, br, g, potentials, st);
   }
@@ -89,7 +84,7 @@ SolveInProgress* in_progress(Context& ctx) { return runtime(ctx).solve.get(); }
 // alpha psi with the final matter (after the recovery: it may have reset cells to atmosphere).
 void lapse(SolveInProgress& s) {
   s.src = gather_sources(s.br, s.g);
-  const CompositeField S = s.br.gather_cells([&](Block& b) { return DensitisedStressTrace(b, s.g); });
+  const CompositeField S = s.br.gather(s.g.sources, MatterSources::idx::S_trace);
   s.sv.solve_lapse(s.src.E, S, s.st, s.stats, s.set);
 }
 
@@ -103,28 +98,6 @@ void shift_and_finish(Context& ctx, SolveInProgress& s) {
   Runtime& rt = runtime(ctx);
   write_tsv(ctx, rt.reason, s.stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - s.t0).count());
   rt.solve.reset();
-}
-
-// Initial data given as primitives: iterate psi with the primitives fixed (E~ = psi^6 E changes
-// with psi).
-void psi_from_primitives(Context& ctx, SolveInProgress& s) {
-  const int max_iter = static_cast<int>(ctx.param<std::int64_t>("XCFC", "initial_iterations"));
-  double change = 0;
-  for (int it = 0; it < max_iter; ++it) {
-    conserved_from_primitives(ctx, s.g);
-    const Sources src = gather_sources(s.br, s.g);
-    const CompositeField old = s.st.psi;
-    s.sv.solve_conformal_factor(src.E, src.S, s.st, s.stats, s.set);
-    s.br.scatter(s.st.psi, s.g.metric, Metric::idx::psi);
-    change = 0;
-    for (std::size_t n = 0; n < old.part.size(); ++n)
-      for (std::size_t q = 0; q < old.part[n].size(); ++q) change = std::max(change, std::abs(s.st.psi.part[n][q] - old.part[n][q]));
-    if (change <= s.set.tolerance) break;
-  }
-  char m[200];
-  std::snprintf(m, sizeof m, "XCFC: initial psi from the primitives, last change %.2e", change);
-  ctx.info(m);
-  conserved_from_primitives(ctx, s.g);
 }
 
 }  // namespace
@@ -159,16 +132,42 @@ void step_shift(Context& ctx) {
 
 void initial_conformal_factor(Context& ctx) {
   Runtime& rt = runtime(ctx);
-  const std::string& mode = ctx.param<std::string>("XCFC", "initial_metric");
-  if (mode == "keep") return;
+  if (ctx.param<std::string>("XCFC", "initial_metric") != "from_conserved") return;
   rt.reason = "initial";
   rt.solve = std::make_shared<SolveInProgress>(ctx, true);
   SolveInProgress& s = *rt.solve;
-  if (mode == "from_primitives") return psi_from_primitives(ctx, s);
   s.src = gather_sources(s.br, s.g);
   s.sv.solve_conformal_factor(s.src.E, s.src.S, s.st, s.stats, s.set);
   s.br.scatter(s.st.psi, s.g.metric, Metric::idx::psi);
   rt.recovery_due = true;
+}
+
+// Initial data given as primitives: psi iterated with the primitives fixed (E~ = psi^6 E changes
+// with psi). Each pass of XCFC_InitialPsiFromPrimitives: the matter thorn makes the conserved
+// variables and sources of the primitives with the current psi, then one psi solve here; after the
+// last change below the tolerance (or XCFC::initial_iterations), one more pass for the final psi.
+void initial_psi_iteration(Context& ctx) {
+  Runtime& rt = runtime(ctx);
+  if (rt.psi_iteration.final_pass) {
+    rt.psi_iteration.done = true;
+    return;
+  }
+  if (!rt.solve) rt.reason = "initial", rt.solve = std::make_shared<SolveInProgress>(ctx, true);
+  SolveInProgress& s = *rt.solve;
+  const Sources src = gather_sources(s.br, s.g);
+  const CompositeField old = s.st.psi;
+  s.sv.solve_conformal_factor(src.E, src.S, s.st, s.stats, s.set);
+  s.br.scatter(s.st.psi, s.g.metric, Metric::idx::psi);
+  double change = 0;
+  for (std::size_t n = 0; n < old.part.size(); ++n)
+    for (std::size_t q = 0; q < old.part[n].size(); ++q) change = std::max(change, std::abs(s.st.psi.part[n][q] - old.part[n][q]));
+  const int max_iter = static_cast<int>(ctx.param<std::int64_t>("XCFC", "initial_iterations"));
+  if (change <= s.set.tolerance || ++rt.psi_iteration.count >= max_iter) {
+    rt.psi_iteration.final_pass = true;
+    char m[200];
+    std::snprintf(m, sizeof m, "XCFC: initial psi from the primitives, last change %.2e", change);
+    ctx.info(m);
+  }
 }
 
 void initial_lapse_and_shift(Context& ctx) {
@@ -181,7 +180,7 @@ void initial_lapse_and_shift(Context& ctx) {
 double psi_residual(Context& ctx) {
   XcfcSolver& sv = solver(ctx);
   const GridBridge br(ctx, sv.multigrid());
-  const MatterGroups g = MatterGroups::of(ctx);
+  const SpacetimeGroups g = SpacetimeGroups::of(ctx);
   XcfcState st;
   st.psi = br.gather(g.metric, Metric::idx::psi);
   const Sources src = gather_sources(br, g);

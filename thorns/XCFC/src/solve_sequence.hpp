@@ -17,6 +17,7 @@ void step_shift(Context& ctx);             // beta^i; stores and records the sol
 // Initial metric (XCFC::initial_metric): from_conserved takes X, A, psi here and the lapse and
 // shift after the recovery; from_primitives iterates psi with the primitives fixed (no recovery).
 void initial_conformal_factor(Context& ctx);
+void initial_psi_iteration(Context& ctx);  // from_primitives: one psi solve per pass
 void initial_lapse_and_shift(Context& ctx);
 
 // Relative residual of the psi equation with the current matter (A^2 term left out: it is not

@@ -38,4 +38,12 @@ void recover_all(Context& ctx, const char* where);
 // rules 1, 3, 5) and warns (rank 0) about failed recoveries. Collective.
 void report_recovery(Context& ctx, const con2prim::Diagnostics& d, const char* where, const std::string& fatal_cell = "");
 
+// Spacetime::matter_sources from the current matter: E~ = D + tau, S~_i, S~ = S~_i v^i + 3 psi^6 p
+// (all densitised). Runs in the metric solver's source and recovery hooks.
+void fill_matter_sources(Context& ctx);
+
+// Initial data given as primitives: HydroBase::cons = psi^6 cons(prim, psi^4 f) with the current psi
+// (and W from v), on the interior.
+void conserved_from_primitives(Context& ctx);
+
 }  // namespace remnant::hydrobase

@@ -1,17 +1,20 @@
-#include "matter_coupling.hpp"
-
+// What HydroBase gives a metric solver: the densitised sources of the xCFC equations in
+// Spacetime::matter_sources, and the conserved variables of the primitives with the current psi
+// (initial data given as primitives).
 #include <cmath>
 
 #include "Con2Prim/prim_to_cons.hpp"
+#include "HydroBase/sweeps.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
 
-namespace remnant::xcfc {
+namespace remnant::hydrobase {
 namespace {
 
 using Prim = vars::HydroBase::prim;
 using Cons = vars::HydroBase::cons;
 using Metric = vars::Spacetime::metric;
+using Sources = vars::Spacetime::matter_sources;
 
 con2prim::Metric3 cell_metric(const Block& b, double psi, int i, int j, int k) {
   const Point3 f = coords::metric_diagonal(b.coordinates, {b.centroid(0, i), b.centroid(1, j), b.centroid(2, k)});
@@ -37,13 +40,31 @@ void store(const Prim& prim, const Cons& cons, int i, int j, int k, const con2pr
 
 }  // namespace
 
-MatterGroups MatterGroups::of(const Context& ctx) { return {Cons::id(ctx), Prim::id(ctx), Metric::id(ctx)}; }
-
-void conserved_from_primitives(Context& ctx, const MatterGroups& g) {
+void fill_matter_sources(Context& ctx) {
   for (Block* b : ctx.grid().local_blocks()) {
-    const Prim prim(*b, g.prim);
-    const Cons cons(*b, g.cons);
-    const Metric metric(*b, g.metric);
+    const Prim prim(ctx, *b);
+    const Cons cons(ctx, *b);
+    const Metric metric(ctx, *b);
+    const Sources src(ctx, *b);
+    for_interior(*b, [&](int i, int j, int k) {
+      const double p = metric.psi(i, j, k), p2 = p * p;
+      src.E(i, j, k) = cons.D(i, j, k) + cons.tau(i, j, k);
+      double sv = 0;
+      for (int d = 0; d < 3; ++d) {
+        src.S(d, i, j, k) = cons.S(d, i, j, k);
+        sv += cons.S(d, i, j, k) * prim.vel(d, i, j, k);
+      }
+      // S~ = psi^6 S = S^_i v^i + 3 psi^6 p (S^_i the densitised momentum).
+      src.S_trace(i, j, k) = sv + 3 * p2 * p2 * p2 * prim.press(i, j, k);
+    });
+  }
+}
+
+void conserved_from_primitives(Context& ctx) {
+  for (Block* b : ctx.grid().local_blocks()) {
+    const Prim prim(ctx, *b);
+    const Cons cons(ctx, *b);
+    const Metric metric(ctx, *b);
     for_interior(*b, [&](int i, int j, int k) {
       const double p = metric.psi(i, j, k), p2 = p * p, psi6 = p2 * p2 * p2;
       const con2prim::Metric3 m = cell_metric(*b, p, i, j, k);
@@ -61,19 +82,4 @@ void conserved_from_primitives(Context& ctx, const MatterGroups& g) {
   }
 }
 
-DensitisedStressTrace::DensitisedStressTrace(Block& b, const MatterGroups& g) {
-  const Prim prim(b, g.prim);
-  const Cons cons(b, g.cons);
-  psi = Metric(b, g.metric).field(Metric::idx::psi);
-  press = prim.field(Prim::idx::press);
-  for (int d = 0; d < 3; ++d) S[d] = cons.field(Cons::idx::S + d), v[d] = prim.field(Prim::idx::vel + d);
-}
-
-double DensitisedStressTrace::operator()(int i, int j, int k) const {
-  const double p = psi(i, j, k), p2 = p * p;
-  double sv = 0;
-  for (int d = 0; d < 3; ++d) sv += S[d](i, j, k) * v[d](i, j, k);
-  return sv + 3 * p2 * p2 * p2 * press(i, j, k);
-}
-
-}  // namespace remnant::xcfc
+}  // namespace remnant::hydrobase
