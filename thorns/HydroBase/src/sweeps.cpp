@@ -80,7 +80,7 @@ void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::A
                   Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell) {
   const CellAccess acc(g, b);
   // The mass budget's source component, where the caller has the group (a stand-alone block may not).
-  double* const source = g.budget >= 0 ? b.field(g.budget, 1).origin : nullptr;
+  double* const source = g.budget >= 0 ? b.field(g.budget, vars::HydroBase::mass_budget::idx::source).origin : nullptr;
   for_cells(b, acc, [&](std::ptrdiff_t o, double psi4, double psi6, const std::array<double, 3>& fd) {
     con2prim::Conserved c = acc.load_cons(o, 1.0 / psi6);
     con2prim::Primitives p;

@@ -4,6 +4,7 @@
 #include "exact_solution.hpp"
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
+#include "remnant/vars/WaveToy.hpp"
 
 namespace remnant::wavetoy {
 namespace {
@@ -25,24 +26,25 @@ WaveSetup setup_from(const Context& ctx) {
 
 void initial(Context& ctx) {
   const WaveSetup s = setup_from(ctx);
-  const int wave = ctx.var("WaveToy::wave");
   for (Block* b : ctx.grid().local_blocks()) {
-    Field u = b->field(wave, 0), rho = b->field(wave, 1);
+    const vars::WaveToy::wave wave(ctx, *b);
     for_interior(*b, [&](int i, int j, int k) {
       const WaveState w = exact_solution(s, ctx.time(), b->x(0, i), b->x(1, j), b->x(2, k));
-      u(i, j, k) = w.u;
-      rho(i, j, k) = w.rho;
+      wave.u(i, j, k) = w.u;
+      wave.rho(i, j, k) = w.rho;
     });
   }
 }
 
 void rhs(Context& ctx) {
   const double c2 = std::pow(ctx.param<double>("WaveToy", "speed"), 2);
-  const int wave = ctx.var("WaveToy::wave");
-  const int wave_rhs = ctx.var("WaveToy::wave_rhs");
+  using Wave = vars::WaveToy::wave;
+  using WaveRhs = vars::WaveToy::wave_rhs;
   for (Block* b : ctx.grid().local_blocks()) {
-    Field u = b->field(wave, 0), rho = b->field(wave, 1);
-    Field du = b->field(wave_rhs, 0), drho = b->field(wave_rhs, 1);
+    const Wave wave(ctx, *b);
+    const WaveRhs wave_rhs(ctx, *b);
+    const Field u = wave.field(Wave::idx::u), rho = wave.field(Wave::idx::rho);
+    const Field du = wave_rhs.field(WaveRhs::idx::u), drho = wave_rhs.field(WaveRhs::idx::rho);
     // Unused directions (no ghosts) get zero weight, so one loop serves 1D, 2D and 3D.
     const double wx = b->ng[0] > 0 ? c2 / (b->dx[0] * b->dx[0]) : 0.0;
     const double wy = b->ng[1] > 0 ? c2 / (b->dx[1] * b->dx[1]) : 0.0;
@@ -66,12 +68,11 @@ void rhs(Context& ctx) {
 
 void error(Context& ctx) {
   const WaveSetup s = setup_from(ctx);
-  const int wave = ctx.var("WaveToy::wave");
-  const int err = ctx.var("WaveToy::wave_error");
   for (Block* b : ctx.grid().local_blocks()) {
-    Field u = b->field(wave, 0), e = b->field(err, 0);
+    const vars::WaveToy::wave wave(ctx, *b);
+    const vars::WaveToy::wave_error err(ctx, *b);
     for_interior(*b, [&](int i, int j, int k) {
-      e(i, j, k) = u(i, j, k) - exact_solution(s, ctx.time(), b->x(0, i), b->x(1, j), b->x(2, k)).u;
+      err.u_err(i, j, k) = wave.u(i, j, k) - exact_solution(s, ctx.time(), b->x(0, i), b->x(1, j), b->x(2, k)).u;
     });
   }
 }
