@@ -1,6 +1,7 @@
 #include "cadence.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <string>
 
@@ -15,9 +16,21 @@ using Metric = vars::Spacetime::metric;
 using History = vars::XCFC::metric_history;
 using Potentials = vars::XCFC::potentials;
 static_assert(History::idx::psi_before - History::idx::psi_last == Metric::ncomp &&
+                  History::idx::psi_earlier - History::idx::psi_before == Metric::ncomp &&
                   History::idx::alpha_last - History::idx::psi_last == Metric::idx::alpha &&
                   History::idx::beta_last - History::idx::psi_last == Metric::idx::beta,
-              "XCFC::metric_history holds two copies of Spacetime::metric's layout (thorn.yaml)");
+              "XCFC::metric_history holds three copies of Spacetime::metric's layout (thorn.yaml)");
+
+std::array<double, 3> lagrange_weights(double t, const std::array<double, 3>& times) {
+  std::array<double, 3> w{};
+  for (int a = 0; a < 3; ++a) {
+    double l = 1;
+    for (int b = 0; b < 3; ++b)
+      if (b != a) l *= (t - times[static_cast<std::size_t>(b)]) / (times[static_cast<std::size_t>(a)] - times[static_cast<std::size_t>(b)]);
+    w[static_cast<std::size_t>(a)] = l;
+  }
+  return w;
+}
 
 std::optional<double> extrapolation_weight(Context& ctx) {
   const Runtime& rt = runtime(ctx);
@@ -74,17 +87,21 @@ void record_history(Context& ctx) {
   for (Block* b : ctx.grid().local_blocks())
     for (int c = 0; c < Metric::ncomp; ++c) {
       Field m = b->field(metric, c), last = b->field(hist, History::idx::psi_last + c), before = b->field(hist, History::idx::psi_before + c);
-      // The first solve fills both slots: "before" is unused until a second solve is recorded,
-      // but it is declared written (and checkpointed), so it must hold defined values.
+      Field earlier = b->field(hist, History::idx::psi_earlier + c);
+      // The first solve fills every slot: the older ones are unused until more solves are recorded,
+      // but they are declared written (and checkpointed), so they must hold defined values.
       const Field& previous = rt.history == 0 ? m : last;
+      const Field& older = rt.history == 0 ? m : before;
       for_interior(*b, [&](int i, int j, int k) {
+        earlier(i, j, k) = older(i, j, k);
         before(i, j, k) = previous(i, j, k);
         last(i, j, k) = m(i, j, k);
       });
     }
+  rt.t_earlier = rt.t_before;
   rt.t_before = rt.t_last;
   rt.t_last = ctx.time();
-  rt.history = std::min(rt.history + 1, 2);
+  rt.history = std::min(rt.history + 1, 3);
   ++rt.solves;
   rt.steps_since_solve = 0;
 }
@@ -99,7 +116,7 @@ void cadence(Context& ctx) {
     rt.stage = Stage::solve, rt.reason = "cadence", rt.sources_due = true;
     return;
   }
-  rt.stage = ctx.param<std::string>("XCFC", "extrapolation") == "linear" ? Stage::extrapolate : Stage::check_trigger;
+  rt.stage = ctx.param<std::string>("XCFC", "extrapolation") != "hold" ? Stage::extrapolate : Stage::check_trigger;
   // The trigger's residual needs the sources of this step's matter.
   rt.sources_due = ctx.param<double>("XCFC", "residual_trigger") > 0;
 }
@@ -116,10 +133,22 @@ void extrapolate(Context& ctx) {
   if (!weight) return;
   const double w = *weight;
   const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
+  const bool quadratic = ctx.param<std::string>("XCFC", "extrapolation") == "quadratic" && rt.history >= 3 &&
+                         rt.t_before > rt.t_earlier;
+  const std::array<double, 3> l = quadratic ? lagrange_weights(ctx.time(), {rt.t_last, rt.t_before, rt.t_earlier})
+                                            : std::array<double, 3>{0, 0, 0};
   for (Block* b : ctx.grid().local_blocks())
     for (int c = 0; c < Metric::ncomp; ++c) {
-      Field m = b->field(metric, c), last = b->field(hist, History::idx::psi_last + c), before = b->field(hist, History::idx::psi_before + c);
-      for_interior(*b, [&](int i, int j, int k) { m(i, j, k) = last(i, j, k) + w * (last(i, j, k) - before(i, j, k)); });
+      Field m = b->field(metric, c);
+      Field last = b->field(hist, History::idx::psi_last + c), before = b->field(hist, History::idx::psi_before + c);
+      if (quadratic) {
+        Field earlier = b->field(hist, History::idx::psi_earlier + c);
+        for_interior(*b, [&](int i, int j, int k) {
+          m(i, j, k) = l[0] * last(i, j, k) + l[1] * before(i, j, k) + l[2] * earlier(i, j, k);
+        });
+      } else {
+        for_interior(*b, [&](int i, int j, int k) { m(i, j, k) = last(i, j, k) + w * (last(i, j, k) - before(i, j, k)); });
+      }
     }
   rt.recovery_due = true;
 }

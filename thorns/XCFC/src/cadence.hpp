@@ -6,6 +6,7 @@
 // The group XCFC_Solve (thorn.yaml) runs its steps in passes: XCFC_Extrapolate, the solve's steps
 // (solve_sequence.hpp) with the recovery group, XCFC_ResidualTrigger; a step whose stage is not
 // the current one does nothing.
+#include <array>
 #include <optional>
 
 #include "XCFC/xcfc_system.hpp"
@@ -14,6 +15,9 @@
 #include "remnant/context.hpp"
 
 namespace remnant::xcfc {
+
+// Lagrange weights at time t of values at three distinct times (quadratic extrapolation).
+std::array<double, 3> lagrange_weights(double t, const std::array<double, 3>& times);
 
 // The weight w of last + w (last - before) at the current time, or none before two solves.
 std::optional<double> extrapolation_weight(Context& ctx);

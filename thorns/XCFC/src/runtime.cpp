@@ -57,19 +57,22 @@ XcfcSolver& solver(Context& ctx) {
 }
 
 std::string save_persistent(const Runtime& rt) {
-  char text[160];
-  std::snprintf(text, sizeof text, "%lld %lld %a %a %d", static_cast<long long>(rt.steps_since_solve),
-                static_cast<long long>(rt.solves), rt.t_last, rt.t_before, rt.history);
+  char text[200];
+  std::snprintf(text, sizeof text, "%lld %lld %a %a %d %a", static_cast<long long>(rt.steps_since_solve),
+                static_cast<long long>(rt.solves), rt.t_last, rt.t_before, rt.history, rt.t_earlier);
   return text;
 }
 
 void restore_persistent(Runtime& rt, const std::string& text) {
   std::istringstream s(text);
-  std::string t_last, t_before;
-  s >> rt.steps_since_solve >> rt.solves >> t_last >> t_before >> rt.history;
-  if (!s) throw RunError("XCFC: the checkpoint's persistent state '" + text + "' is not 'steps solves t_last t_before history'");
+  std::string t_last, t_before, t_earlier;
+  s >> rt.steps_since_solve >> rt.solves >> t_last >> t_before >> rt.history >> t_earlier;
+  if (!s)
+    throw RunError("XCFC: the checkpoint's persistent state '" + text +
+                   "' is not 'steps solves t_last t_before history t_earlier'");
   rt.t_last = std::strtod(t_last.c_str(), nullptr);
   rt.t_before = std::strtod(t_before.c_str(), nullptr);
+  rt.t_earlier = std::strtod(t_earlier.c_str(), nullptr);
 }
 
 }  // namespace remnant::xcfc

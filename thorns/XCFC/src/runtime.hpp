@@ -35,8 +35,8 @@ struct Runtime {
   std::unique_ptr<XcfcSolver> solver;
   CompositeLayout layout;
   std::int64_t steps_since_solve = 0, solves = 0;
-  // Times of the last two solves and how many of XCFC::metric_history's two slots are filled.
-  double t_last = 0, t_before = 0;
+  // Times of the last three solves and how many of XCFC::metric_history's three slots are filled.
+  double t_last = 0, t_before = 0, t_earlier = 0;
   int history = 0;
   bool tsv_started = false;  // xcfc.tsv created (fresh run) or trimmed (recovered run) by this process
   bool warned_theta = false;

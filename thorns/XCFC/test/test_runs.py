@@ -88,7 +88,8 @@ def mode_extrapolation(r):
     ref, _ = r.run("every1", 1, n + ["XCFC::solve_every=1"])
     lin, _ = r.run("linear", 1, n + ["XCFC::solve_every=6", "XCFC::extrapolation=linear"])
     hold, _ = r.run("hold", 1, n + ["XCFC::solve_every=6", "XCFC::extrapolation=hold"])
-    R, L, H = (columns(os.path.join(d, "analysis.tsv")) for d in (ref, lin, hold))
+    quad, _ = r.run("quadratic", 1, n + ["XCFC::solve_every=6", "XCFC::extrapolation=quadratic"])
+    R, L, H, Q = (columns(os.path.join(d, "analysis.tsv")) for d in (ref, lin, hold, quad))
     # From iteration 60 on: past the first solve intervals (no history yet) and the star's first
     # adjustment to the discrete equilibrium (not smooth in time).
     for col in ("alpha_c", "psi_c"):
@@ -99,7 +100,11 @@ def mode_extrapolation(r):
               " per step %.3e" % (col, el, eh, eh / max(el, 1e-300), change))
         assert eh > 5 * el, "linear extrapolation is not much closer to solving every step than holding (%s)" % col
         assert eh > 2 * change, "the held metric should lag by about half a solve interval (%s)" % col
-    assert reasons(lin).count("cadence") == 40 and reasons(hold).count("cadence") == 40
+        # Quadratic extrapolation errs at third order in the solve interval instead of second.
+        eq = np.max(np.abs(Q[col][60:] - R[col][60:]))
+        print("%s: quadratic %.3e (linear/quadratic %.1f)" % (col, eq, el / max(eq, 1e-300)))
+        assert el > 2 * eq, "quadratic extrapolation is not closer to solving every step than linear (%s)" % col
+    assert reasons(lin).count("cadence") == 40 and reasons(hold).count("cadence") == 40 and reasons(quad).count("cadence") == 40
 
 
 def mode_trigger(r):

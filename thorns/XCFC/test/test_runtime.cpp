@@ -4,6 +4,7 @@
 
 #include "remnant/context.hpp"
 #include "remnant/error.hpp"
+#include "cadence.hpp"
 #include "runtime.hpp"
 
 namespace {
@@ -26,7 +27,7 @@ TEST(XCFCRuntime, EachSimulationHasItsOwnState) {
 TEST(XCFCRuntime, PersistentCountersRoundTripBitForBit) {
   xcfc::Runtime saved;
   saved.steps_since_solve = 4, saved.solves = 12, saved.history = 2;
-  saved.t_last = 0.1 + 0.2, saved.t_before = 1.0 / 3.0;
+  saved.t_last = 0.1 + 0.2, saved.t_before = 1.0 / 3.0, saved.t_earlier = -2.0 / 7.0;
   xcfc::Runtime restored;
   xcfc::restore_persistent(restored, xcfc::save_persistent(saved));
   EXPECT_EQ(restored.steps_since_solve, 4);
@@ -34,7 +35,22 @@ TEST(XCFCRuntime, PersistentCountersRoundTripBitForBit) {
   EXPECT_EQ(restored.history, 2);
   EXPECT_EQ(restored.t_last, saved.t_last);  // exact: hexadecimal floats
   EXPECT_EQ(restored.t_before, saved.t_before);
+  EXPECT_EQ(restored.t_earlier, saved.t_earlier);
   EXPECT_THROW(xcfc::restore_persistent(restored, "4 12"), RunError);
+}
+
+TEST(XCFCCadence, QuadraticExtrapolationWeightsAreExactForQuadratics) {
+  // Unequal solve intervals (a residual-triggered solve) and a time past the last solve.
+  const std::array<double, 3> times{2.5, 1.75, 0.5};
+  const double t = 3.1;
+  const std::array<double, 3> w = xcfc::lagrange_weights(t, times);
+  auto f = [](double x) { return 0.3 - 1.7 * x + 0.45 * x * x; };
+  EXPECT_NEAR(w[0] * f(times[0]) + w[1] * f(times[1]) + w[2] * f(times[2]), f(t), 1e-13);
+  EXPECT_NEAR(w[0] + w[1] + w[2], 1.0, 1e-15);
+  // At a solve time the extrapolation is that solve's metric.
+  const std::array<double, 3> at_last = xcfc::lagrange_weights(times[0], times);
+  EXPECT_EQ(at_last[0], 1.0);
+  EXPECT_EQ(at_last[1], 0.0);
 }
 
 }  // namespace
