@@ -40,28 +40,14 @@ std::string tensor_base(const ComponentSpec& c) {
   return c.name.substr(0, c.name.size() - digits);
 }
 
-const char* centering_name(Centering c) {
-  switch (c) {
-    case Centering::cell: return "cell";
-    case Centering::face_x: return "face_x";
-    case Centering::face_y: return "face_y";
-    case Centering::face_z: return "face_z";
-    case Centering::edge_x: return "edge_x";
-    case Centering::edge_y: return "edge_y";
-    case Centering::edge_z: return "edge_z";
-    case Centering::vertex: return "vertex";
-  }
-  return "cell";
-}
-
 void emit_group(std::ostringstream& os, const ThornSpec& spec, const VariableGroupSpec& g) {
   check_name(spec, g, g.name, "group");
   const std::string full = spec.name + "::" + g.name;
-  os << "// " << full << " (" << centering_name(g.centering) << "): " << g.description << "\n";
+  os << "// " << full << " (" << to_string(g.centering) << "): " << g.description << "\n";
   os << "struct " << g.name << " : GroupView {\n";
   os << "  static constexpr const char* full_name = \"" << full << "\";\n";
   os << "  static constexpr int ncomp = " << g.ncomp() << ";\n";
-  os << "  static constexpr Centering centering = Centering::" << centering_name(g.centering) << ";\n";
+  os << "  static constexpr Centering centering = Centering::" << to_string(g.centering) << ";\n";
   // Component indices, and the first component of every declared vector or tensor.
   os << "  struct idx {\n    enum : int {";
   for (int c = 0; c < g.ncomp(); ++c) {
