@@ -68,9 +68,10 @@ def reasons(out):
 
 
 def mode_restart(r):
-    cadence = ["XCFC::solve_every=3", "XCFC::extrapolation=linear"]
-    for np1, np2 in ((1, 1), (2, 2), (1, 2)):
-        tag = "%dto%d" % (np1, np2)
+    # The 1 -> 2 case extrapolates quadratically: its third history slot and time must survive too.
+    for np1, np2, extrapolation in ((1, 1, "linear"), (2, 2, "linear"), (1, 2, "quadratic")):
+        cadence = ["XCFC::solve_every=3", "XCFC::extrapolation=" + extrapolation]
+        tag = "%dto%d_%s" % (np1, np2, extrapolation)
         straight, _ = r.run("straight_" + tag, np1, cadence + ["MoL::max_iterations=30"])
         first, _ = r.run("restarted_" + tag, np1, cadence + ["MoL::max_iterations=17", "IO::checkpoint_every=15"])
         _, p = r.run("restarted_" + tag, np2, cadence + ["MoL::max_iterations=30", "IO::recover=auto"])
