@@ -72,7 +72,7 @@ struct Reader {
   }
 
   VariableGroupSpec variable(const YAML::Node& n, const std::string& thorn) const {
-    check_keys(n, {"group", "centering", "tensor", "role", "rhs", "checkpoint", "prolongation", "description"},
+    check_keys(n, {"group", "centering", "tensor", "basis", "role", "rhs", "checkpoint", "prolongation", "description"},
                "a variable group");
     VariableGroupSpec g;
     g.thorn = thorn;
@@ -122,6 +122,12 @@ struct Reader {
       g.prolongation = str(n["prolongation"], "prolongation");
       if (std::find(prolongations.begin(), prolongations.end(), g.prolongation) == prolongations.end())
         throw InputError(at(n["prolongation"]), "prolongation '" + g.prolongation + "' is not one of: " + join(prolongations));
+    }
+    if (n["basis"]) {
+      const std::string b = str(n["basis"], "basis");
+      if (b != "coordinate" && b != "cartesian")
+        throw InputError(at(n["basis"]), "basis '" + b + "' is not one of: coordinate, cartesian");
+      g.cartesian_basis = b == "cartesian";
     }
     if (n["description"]) g.description = str(n["description"], "description");
     return g;

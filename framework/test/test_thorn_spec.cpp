@@ -82,3 +82,15 @@ TEST(ThornSpec, SchemaErrorsNameFileAndLine) {
                            {"a.yaml:3:", "evolved face_x-centred group 'B' needs a grid for staggered variables", "staggered_grid"});
   EXPECT_NO_THROW(parse_thorn_spec("thorn: A\nrequires: [staggered_grid]\nvariables:\n  - group: B\n    centering: face_x\n    tensor: [scalar B]\n    role: evolved\n    rhs: B_rhs\n", "a.yaml"));
 }
+
+TEST(ThornSpec, BasisOfVectorComponents) {
+  const auto t = parse_thorn_spec(
+      "thorn: A\nvariables:\n  - {group: B, tensor: [vector B], basis: cartesian}\n  - {group: v, tensor: [vector v]}\n"
+      "  - {group: w, tensor: [vector w], basis: coordinate}\n",
+      "a.yaml");
+  EXPECT_TRUE(t.variables[0].cartesian_basis);
+  EXPECT_FALSE(t.variables[1].cartesian_basis);
+  EXPECT_FALSE(t.variables[2].cartesian_basis);
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - {group: B, tensor: [vector B], basis: polar}\n", "a.yaml"); },
+                           {"a.yaml:3:", "basis 'polar' is not one of: coordinate, cartesian"});
+}

@@ -44,6 +44,9 @@ struct VariableGroupSpec {
   int rhs_id = -1;                 // resolved id of the RHS group
   bool checkpoint = false;
   std::string prolongation = "conservative_linear";
+  // Components of vectors and tensors along the Cartesian axes (x, y, z) rather than the grid's
+  // coordinate basis (thorn.yaml `basis: cartesian`): symmetry images take Cartesian parities.
+  bool cartesian_basis = false;
   std::string description;
   SourceLocation where;
 

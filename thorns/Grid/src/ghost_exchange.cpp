@@ -5,6 +5,14 @@
 namespace remnant::grid {
 
 namespace {
+
+// The sign a ghost takes from its image: coordinate-basis parity, or Cartesian for groups
+// declared with `basis: cartesian`.
+double component_sign(const IndexMap& map, const VariableGroupSpec& spec, int c) {
+  const ComponentSpec& comp = spec.components[static_cast<std::size_t>(c)];
+  return spec.cartesian_basis ? map.cartesian_parity(comp) : map.sign(comp);
+}
+
 int phase_of(const Transfer& t) { return t.kind == TransferKind::prolong ? t.dst_level : 0; }
 }  // namespace
 
@@ -107,7 +115,7 @@ void GhostExchange::run(const VariableRegistry& vars, std::span<const int> group
       for (const GroupLayout& gl : layouts) {
         const auto& spec = vars.group(gl.group);
         for (int c = 0; c < gl.ncomp; ++c)
-          apply_transfer(*t, gl.field(src, c), gl.field(dst, c), t->map.sign(spec.components[static_cast<std::size_t>(c)]),
+          apply_transfer(*t, gl.field(src, c), gl.field(dst, c), component_sign(t->map, spec, c),
                          stagger_, dimension_, *geometry_);
       }
     }
@@ -123,7 +131,7 @@ void GhostExchange::run(const VariableRegistry& vars, std::span<const int> group
           const auto& spec = vars.group(gl.group);
           for (int c = 0; c < gl.ncomp; ++c) {
             apply_transfer(*t, buffer_field(in, t->src_box), gl.field(dst, c),
-                           t->map.sign(spec.components[static_cast<std::size_t>(c)]), stagger_, dimension_, *geometry_);
+                           component_sign(t->map, spec, c), stagger_, dimension_, *geometry_);
             in += points;
           }
         }

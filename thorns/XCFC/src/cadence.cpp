@@ -65,8 +65,8 @@ void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& 
     return br.gather_cells([&](Block& b) { return extrapolated(b.field(potentials, c), b.field(before, c)); });
   };
   for (int a = 0; a < 3; ++a) {
-    st.X_potentials.B[a] = potential(Potentials::idx::XBx + a);
-    st.beta_potentials.B[a] = potential(Potentials::idx::betaBx + a);
+    st.X_potentials.B[a] = potential(Potentials::idx::XB + a);
+    st.beta_potentials.B[a] = potential(Potentials::idx::betaB + a);
   }
   st.X_potentials.chi = potential(Potentials::idx::Xchi);
   st.beta_potentials.chi = potential(Potentials::idx::betachi);

@@ -8,6 +8,7 @@
 #include "grid_bridge.hpp"
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
+#include "remnant/vars/XCFC.hpp"
 #include "runtime.hpp"
 #include "solve_sequence.hpp"
 
@@ -16,6 +17,15 @@ namespace {
 
 // Before anything is computed: the grid's domain faces must be ones the solver knows.
 void check_parameters(Context& ctx) {
+  // The vector solves treat B as a vector in Cartesian components (vector_poisson.cpp); the warm
+  // starts the Grid keeps must be declared so, or their symmetry images take the wrong signs.
+  for (const char* name : {"XCFC::potentials", "XCFC::potentials_before"}) {
+    const VariableGroupSpec& g = ctx.vars().group(ctx.var(name));
+    for (int a = 0; a < 3; ++a)
+      for (int first : {vars::XCFC::potentials::idx::XB, vars::XCFC::potentials::idx::betaB})
+        if (!g.cartesian_basis || g.components[static_cast<std::size_t>(first + a)].kind != TensorKind::vector)
+          throw InputError(g.where, std::string(name) + " must declare XB and betaB as `vector` with `basis: cartesian`");
+  }
   const Domain domain = ctx.grid().domain();
   for (int side = 0; side < 2; ++side)
     for (int d = 0; d < domain.faces.dimension; ++d) {

@@ -48,8 +48,8 @@ void store_lapse_shift(const GridBridge& br, const SpacetimeGroups& g, int poten
   br.scatter(st.alpha(), g.metric, Metric::idx::alpha);
   for (int d = 0; d < 3; ++d) br.scatter(st.beta[d], g.metric, Metric::idx::beta + d);
   for (int a = 0; a < 3; ++a) {
-    br.scatter(st.X_potentials.B[a], potentials, Potentials::idx::XBx + a);
-    br.scatter(st.beta_potentials.B[a], potentials, Potentials::idx::betaBx + a);
+    br.scatter(st.X_potentials.B[a], potentials, Potentials::idx::XB + a);
+    br.scatter(st.beta_potentials.B[a], potentials, Potentials::idx::betaB + a);
   }
   br.scatter(st.X_potentials.chi, potentials, Potentials::idx::Xchi);
   br.scatter(st.beta_potentials.chi, potentials, Potentials::idx::betachi);
