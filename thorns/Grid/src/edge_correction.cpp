@@ -26,12 +26,6 @@ bool boundary_towards(const Offset& o, const std::array<int, 3>& s, const Range&
   return true;
 }
 
-Range origin_of(const Forest& f, const BlockKey& k) {
-  Range o{};
-  for (std::size_t e = 0; e < 3; ++e) o[e] = k.index[e] * f.block_cells()[e];
-  return o;
-}
-
 }  // namespace
 
 EdgeCorrection::EdgeCorrection(const Forest& forest, const BoundaryMaps& maps, std::span<Block* const> blocks,
@@ -51,7 +45,7 @@ EdgeCorrection::EdgeCorrection(const Forest& forest, const BoundaryMaps& maps, s
 void EdgeCorrection::plan_same_level(const Forest& forest, const BoundaryMaps& maps, std::int64_t gid) {
   const BlockKey& key = forest.key(gid);
   const auto& n = forest.block_cells();
-  const Range origin = origin_of(forest, key);
+  const Range origin = forest.origin(key);
   // Per boundary point of this block: the lowest gid among the same-level blocks that share it.
   std::map<std::array<int, 3>, std::pair<std::int64_t, std::array<int, 3>>> best;
   bool involved = is_mine(gid);
@@ -66,7 +60,7 @@ void EdgeCorrection::plan_same_level(const Forest& forest, const BoundaryMaps& m
     const std::int64_t other = forest.find(key.level, K);
     if (other < 0 || other >= gid) continue;
     involved = involved || is_mine(other);
-    const Range other_origin = origin_of(forest, forest.key(other));
+    const Range other_origin = forest.origin(forest.key(other));
     std::array<int, 3> shift{};
     for (std::size_t e = 0; e < 3; ++e) shift[e] = static_cast<int>(origin[e] + map->shift[e] - other_origin[e]);
     for (std::int64_t k = points.lo[2]; k < points.hi[2]; ++k)
@@ -96,7 +90,7 @@ void EdgeCorrection::plan_finer(const Forest& forest, const BoundaryMaps& maps, 
   const int l = ck.level, dim = dimension_;
   if (l >= forest.finest_level()) return;
   const auto& n = forest.block_cells();
-  const Range origin = origin_of(forest, ck);
+  const Range origin = forest.origin(ck);
   for (const Offset& o : neighbour_offsets(dim)) {
     GlobalBox cells, points;
     if (!boundary_towards(o, stagger_, origin, n, dim, cells, points)) continue;

@@ -26,6 +26,12 @@ class Forest {
 
   int dimension() const { return dimension_; }
   const std::array<int, 3>& block_cells() const { return block_cells_; }
+  // Global index (on the block's level) of the first interior cell of a block.
+  std::array<std::int64_t, 3> origin(const BlockKey& k) const {
+    std::array<std::int64_t, 3> o{};
+    for (std::size_t d = 0; d < 3; ++d) o[d] = k.index[d] * block_cells_[d];
+    return o;
+  }
   // Blocks per direction on a level (1 in unused directions).
   BlockIndex blocks_on_level(int level) const;
   std::int64_t total_blocks() const { return static_cast<std::int64_t>(leaves_.size()); }

@@ -19,17 +19,11 @@ Box to_local(const GlobalBox& g, const Range& origin) {
   return b;
 }
 
-Range origin_of(const Forest& f, const BlockKey& k) {
-  Range o{};
-  for (std::size_t d = 0; d < 3; ++d) o[d] = k.index[d] * f.block_cells()[d];
-  return o;
-}
-
 }  // namespace
 
 GlobalBox interior_box(const Forest& forest, const BlockKey& key, const std::array<int, 3>& stagger) {
   GlobalBox g;
-  const Range o = origin_of(forest, key);
+  const Range o = forest.origin(key);
   for (std::size_t d = 0; d < 3; ++d) {
     const bool used = static_cast<int>(d) < forest.dimension();
     g.lo[d] = o[d];
@@ -46,7 +40,7 @@ void plan_ghost_transfers(const Forest& forest, const BoundaryMaps& maps, std::i
   const auto& n = forest.block_cells();
   std::array<int, 3> stagger{};
   for (int d = 0; d < dim; ++d) stagger[static_cast<std::size_t>(d)] = stagger_in[static_cast<std::size_t>(d)];
-  const Range dst_origin = origin_of(forest, key);
+  const Range dst_origin = forest.origin(key);
   const BlockIndex nb = forest.blocks_on_level(l);
 
   for (const Offset& o : neighbour_offsets(dim)) {
@@ -75,7 +69,7 @@ void plan_ghost_transfers(const Forest& forest, const BoundaryMaps& maps, std::i
       t.dst_gid = gid;
       t.src_level = sk.level;
       t.dst_level = l;
-      t.src_origin = origin_of(forest, sk);
+      t.src_origin = forest.origin(sk);
       t.dst_origin = dst_origin;
       t.map = *map;
       t.dst_box = to_local(map->inverse(part_image), dst_origin);

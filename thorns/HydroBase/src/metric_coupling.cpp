@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "Con2Prim/prim_to_cons.hpp"
+#include "remnant/cell_geometry.hpp"
 #include "HydroBase/sweeps.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
@@ -17,7 +18,7 @@ using Metric = vars::Spacetime::metric;
 using Sources = vars::Spacetime::matter_sources;
 
 con2prim::Metric3 cell_metric(const Block& b, double psi, int i, int j, int k) {
-  const Point3 f = coords::metric_diagonal(b.coordinates, {b.centroid(0, i), b.centroid(1, j), b.centroid(2, k)});
+  const Point3 f = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k));
   const double p4 = psi * psi * psi * psi, a = p4 * f[0], c = p4 * f[1], d = p4 * f[2];
   return con2prim::Metric3::from_lower_and_inverse({a, 0, 0, c, 0, d}, {1 / a, 0, 0, 1 / c, 0, 1 / d}, a * c * d);
 }

@@ -11,6 +11,7 @@
 #include "RotatingStar/eos_slice.hpp"
 #include "RotatingStar/report.hpp"
 #include "RotatingStar/rns_solver.hpp"
+#include "remnant/cell_geometry.hpp"
 #include "remnant/context.hpp"
 #include "remnant/coordinates.hpp"
 #include "remnant/registrar.hpp"
@@ -115,7 +116,6 @@ void initial(Context& ctx) {
     const vars::HydroBase::prim prim(ctx, *b);
     const vars::Spacetime::metric metric(ctx, *b);
     const CoordinateSystem cs = b->coordinates;
-    auto point = [&](int i, int j, int k) { return Point3{b->centroid(0, i), b->centroid(1, j), b->centroid(2, k)}; };
     // The model at a grid point, and the grid components of the phi vector u^phi d_phi.
     auto evaluate = [&](const Point3& x) {
       const Point3 X = coords::to_cartesian(cs, x);
@@ -128,7 +128,7 @@ void initial(Context& ctx) {
     for (int k = -b->ng[2]; k < b->n[2] + b->ng[2]; ++k)
       for (int j = -b->ng[1]; j < b->n[1] + b->ng[1]; ++j)
         for (int i = -b->ng[0]; i < b->n[0] + b->ng[0]; ++i) {
-          const Point3 x = point(i, j, k);
+          const Point3 x = cell_point(*b, i, j, k);
           const auto [p, X] = evaluate(x);
           metric.psi(i, j, k) = p.psi;
           metric.alpha(i, j, k) = p.alpha;
@@ -136,7 +136,7 @@ void initial(Context& ctx) {
           for (int c = 0; c < 3; ++c) metric.beta(c, i, j, k) = beta[c];
         }
     for_interior(*b, [&](int i, int j, int k) {
-      const Point3 x = point(i, j, k);
+      const Point3 x = cell_point(*b, i, j, k);
       const auto [p, X] = evaluate(x);
       const Point3 v = phi_vector(x, X, p.vel_phi);
       prim.rho(i, j, k) = p.rho;

@@ -7,6 +7,7 @@
 #include "TOV/tov_solver.hpp"
 #include "check_parameters.hpp"
 #include "slice_from_parameters.hpp"
+#include "remnant/cell_geometry.hpp"
 #include "remnant/context.hpp"
 #include "remnant/coordinates.hpp"
 #include "remnant/registrar.hpp"
@@ -32,7 +33,6 @@ void initial(Context& ctx) {
     const vars::HydroBase::prim prim(ctx, *b);
     const vars::Spacetime::metric metric(ctx, *b);
     const CoordinateSystem cs = b->coordinates;
-    auto point = [&](int i, int j, int k) { return Point3{b->centroid(0, i), b->centroid(1, j), b->centroid(2, k)}; };
     auto radius = [&](const Point3& x) {
       const Point3 X = coords::to_cartesian(cs, x);
       return std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
@@ -41,13 +41,13 @@ void initial(Context& ctx) {
     for (int k = -b->ng[2]; k < b->n[2] + b->ng[2]; ++k)
       for (int j = -b->ng[1]; j < b->n[1] + b->ng[1]; ++j)
         for (int i = -b->ng[0]; i < b->n[0] + b->ng[0]; ++i) {
-          const TovPoint p = star.at(radius(point(i, j, k)));
+          const TovPoint p = star.at(radius(cell_point(*b, i, j, k)));
           metric.psi(i, j, k) = p.psi;
           metric.alpha(i, j, k) = p.alpha;
           for (int c = 0; c < 3; ++c) metric.beta(c, i, j, k) = 0.0;
         }
     for_interior(*b, [&](int i, int j, int k) {
-      const Point3 x = point(i, j, k);
+      const Point3 x = cell_point(*b, i, j, k);
       const double r = radius(x);
       const TovPoint p = star.at(r);
       Point3 v{0, 0, 0};
