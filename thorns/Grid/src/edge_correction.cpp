@@ -109,14 +109,8 @@ void EdgeCorrection::plan_finer(const Forest& forest, const BoundaryMaps& maps, 
       for (int c1 = 0; c1 < cy; ++c1)
         for (int c0 = 0; c0 < 2; ++c0) {
           const int c[3] = {c0, c1, c2};
-          BlockIndex Kf = K;
-          GlobalBox cover;  // the child's points, in level-l indices of the image frame
-          for (std::size_t e = 0; e < 3; ++e) {
-            if (static_cast<int>(e) >= dim) continue;
-            Kf[e] = 2 * K[e] + c[e];
-            cover.lo[e] = Kf[e] * n[e] / 2;
-            cover.hi[e] = cover.lo[e] + n[e] / 2 + stagger_[e];
-          }
+          // The child's points, in level-l indices of the image frame.
+          const auto [Kf, cover] = forest.child_cover(K, c, stagger_);
           const GlobalBox part = intersect(point_image, cover);
           if (part.empty()) continue;
           const std::int64_t fine = forest.find(l + 1, Kf);

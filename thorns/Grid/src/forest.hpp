@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "Grid/grid_config.hpp"
+#include "remnant/domain.hpp"
 #include "remnant/grid.hpp"
 
 namespace remnant::grid {
@@ -26,6 +27,23 @@ class Forest {
 
   int dimension() const { return dimension_; }
   const std::array<int, 3>& block_cells() const { return block_cells_; }
+  // Child c (0 or 1 per used direction) of the block at index K on the next level, and the points
+  // it covers in K's level indices (half of K's range per used direction, plus the face points
+  // where `stagger` is 1).
+  struct ChildCover {
+    std::array<std::int64_t, 3> index;
+    GlobalBox cover;
+  };
+  ChildCover child_cover(const std::array<std::int64_t, 3>& K, const int (&c)[3], const std::array<int, 3>& stagger) const {
+    ChildCover r{K, GlobalBox{}};
+    for (std::size_t d = 0; d < 3; ++d) {
+      if (static_cast<int>(d) >= dimension()) continue;
+      r.index[d] = 2 * K[d] + c[d];
+      r.cover.lo[d] = r.index[d] * block_cells_[d] / 2;
+      r.cover.hi[d] = r.cover.lo[d] + block_cells_[d] / 2 + stagger[d];
+    }
+    return r;
+  }
   // Global index (on the block's level) of the first interior cell of a block.
   std::array<std::int64_t, 3> origin(const BlockKey& k) const {
     std::array<std::int64_t, 3> o{};

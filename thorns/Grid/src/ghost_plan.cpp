@@ -107,18 +107,7 @@ void plan_ghost_transfers(const Forest& forest, const BoundaryMaps& maps, std::i
       for (int c1 = 0; c1 < cy; ++c1)
         for (int c0 = 0; c0 < 2; ++c0) {
           const int c[3] = {c0, c1, c2};
-          BlockIndex Kf = K;
-          GlobalBox cover;
-          for (std::size_t d = 0; d < 3; ++d) {
-            if (static_cast<int>(d) >= dim) {
-              cover.lo[d] = 0;
-              cover.hi[d] = 1;
-              continue;
-            }
-            Kf[d] = 2 * K[d] + c[d];
-            cover.lo[d] = Kf[d] * n[d] / 2;
-            cover.hi[d] = cover.lo[d] + n[d] / 2 + stagger[d];
-          }
+          const auto [Kf, cover] = forest.child_cover(K, c, stagger);
           const GlobalBox part = intersect(image, cover);
           if (part.empty()) continue;
           const std::int64_t fine = forest.find(l + 1, Kf);
