@@ -15,7 +15,7 @@ void star(Context& ctx) {
   const StarDiagnostics d = star_diagnostics(ctx);
   if (ctx.rank() == 0) {
     const std::string path = ctx.out_dir() + "/analysis.tsv";
-    if (history.rows.empty()) start_or_resume_tsv_file(ctx, path, tsv_header());
+    if (history.rows.empty()) start_or_resume_tsv_file(ctx, path, tsv_header(d.has_rotation));
     std::ofstream out(path, std::ios::app);
     out << tsv_line(d);
     if (!out) throw RunError("Analysis: cannot write " + path);
