@@ -76,7 +76,7 @@ GridRun run(std::vector<std::string> grid, double axis_ratio, Edit&& edit) {
   o.quiet = true;
   const auto out = std::filesystem::temp_directory_path() / ("remnant_rotstar_grids_" + std::to_string(::getpid()));
   o.overrides = {"Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]", "Grid::region_bounds=[]", "MoL::max_iterations=0",
-                 "MoL::final_time=-1", "Analysis::rotation=true", "RotatingStar::axis_ratio=" + std::to_string(axis_ratio),
+                 "MoL::final_time=-1", "IO::hdf5_every_time=0", "Analysis::rotation=true", "RotatingStar::axis_ratio=" + std::to_string(axis_ratio),
                  "Flesh::out_dir=" + out.string()};
   o.overrides.insert(o.overrides.end(), grid.begin(), grid.end());
   Simulation sim(catalog, o, MPI_COMM_WORLD);
@@ -189,6 +189,55 @@ TEST(RotatingStarGrids, MirrorThroughTheAxisIsRefused) {
     std::printf("%s\n", e.what());
     EXPECT_NE(std::string(e.what()).find("reverses its rotation"), std::string::npos);
   }
+}
+
+}  // namespace
+
+namespace {
+
+// The paper's rotating-star parfiles start: the model is built, mapped and re-solved by XCFC, and
+// Analysis's J and T/|W| (x2: equatorial symmetry) match the model's.
+remnant::analysis::StarDiagnostics start(const std::string& parfile, std::vector<std::string> extra = {}) {
+  static const remnant::ThornCatalog catalog(remnant_compiled_thorns());
+  remnant::SimulationOptions o;
+  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/" + parfile;
+  o.quiet = true;
+  const auto out = std::filesystem::temp_directory_path() / ("remnant_rotstar_paper_" + std::to_string(::getpid()));
+  o.overrides = {"MoL::max_iterations=0", "MoL::final_time=-1", "IO::hdf5_every_time=0", "Flesh::out_dir=" + out.string()};
+  o.overrides.insert(o.overrides.end(), extra.begin(), extra.end());
+  remnant::Simulation sim(catalog, o, MPI_COMM_WORLD);
+  sim.setup_output_and_grid();
+  sim.run();
+  const auto row = sim.context().service<remnant::analysis::History>("Analysis::history").rows.back();
+  std::filesystem::remove_all(out);
+  return row;
+}
+
+TEST(PaperRotatingTests, DifferentiallyRotatingStarStarts) {
+  const auto slice = remnant::tov::polytrope_slice(100.0, 2.0, 0.5);
+  remnant::rotstar::RnsParameters p;
+  p.law = remnant::rotstar::RotationLaw::j_constant;
+  p.omega = 0.02575;
+  p.A2 = 70;
+  const remnant::rotstar::RotatingStarModel m(*slice, p);
+  const auto row = start("drns_sph_2d.yaml");
+  std::printf("drns_sph_2d at t = 0: J %.6f (model %.6f), T/|W| %.6f (%.6f), Omega_c %.6f (%.6f)\n", 2 * row.rotation.J, m.globals().J,
+              row.rotation.T_over_W, m.globals().T_over_W, row.rotation.omega_c, m.globals().omega_c);
+  EXPECT_NEAR(2 * row.rotation.J / m.globals().J, 1, 2e-3);
+  EXPECT_NEAR(row.rotation.T_over_W / m.globals().T_over_W, 1, 1e-2);
+  EXPECT_NEAR(row.rotation.omega_c / m.globals().omega_c, 1, 1e-2);
+}
+
+TEST(PaperRotatingTests, SfhoStarStarts) {
+  const std::string table = std::string(REMNANT_SOURCE_DIR) + "/../shared/eos/Hempel_SFHoEOS_rho222_temp180_ye60_version_1.1_20120817_simple.h5";
+  if (!std::filesystem::exists(table)) GTEST_SKIP() << "EOS table missing: " << table;
+  const auto row = start("sfho_rns_cyl_2d.yaml", {"EOS::table_file=" + table});
+  // The model (rotating_star.tsv of the run): J = 0.744640, T/|W| = 0.077870, r_p/r_e = 0.663.
+  std::printf("sfho_rns_cyl_2d at t = 0: J %.6f (model 0.744640), T/|W| %.6f (0.077870), Omega_c %.6f (0.02633)\n", 2 * row.rotation.J,
+              row.rotation.T_over_W, row.rotation.omega_c);
+  EXPECT_NEAR(2 * row.rotation.J / 0.744640, 1, 1e-3);
+  EXPECT_NEAR(row.rotation.T_over_W / 0.077870, 1, 1e-2);
+  EXPECT_NEAR(row.rotation.omega_c / 0.02633, 1, 1e-2);
 }
 
 }  // namespace
