@@ -241,3 +241,53 @@ TEST(PaperRotatingTests, SfhoStarStarts) {
 }
 
 }  // namespace
+
+namespace {
+
+// The parfile's star evolved `steps` RK3 steps (XCFC every step) on the given grid; Analysis's rows.
+std::vector<remnant::analysis::StarDiagnostics> evolve(std::vector<std::string> grid, int steps) {
+  static const remnant::ThornCatalog catalog(remnant_compiled_thorns());
+  remnant::SimulationOptions o;
+  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/rns_uniform_cyl_2d.yaml";
+  o.quiet = true;
+  const auto out = std::filesystem::temp_directory_path() / ("remnant_rotstar_evolve_" + std::to_string(::getpid()));
+  o.overrides = {"Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]", "Grid::region_bounds=[]",
+                 "MoL::max_iterations=" + std::to_string(steps), "MoL::final_time=-1", "IO::hdf5_every_time=0",
+                 "Analysis::every=1", "XCFC::solve_every=1", "Flesh::out_dir=" + out.string()};
+  o.overrides.insert(o.overrides.end(), grid.begin(), grid.end());
+  remnant::Simulation sim(catalog, o, MPI_COMM_WORLD);
+  sim.setup_output_and_grid();
+  sim.run();
+  auto rows = sim.context().service<remnant::analysis::History>("Analysis::history").rows;
+  std::filesystem::remove_all(out);
+  return rows;
+}
+
+// The same star evolved on a 2D cylindrical and a 3D Cartesian grid of the same spacing (dx = 1):
+// rho_c(t) agrees, the 2D grid conserves J to its boundary flux, the 3D one to its discretisation
+// error. Over 1 ms at this resolution (run by hand: 280 and 355 steps) rho_c falls by 11 % (2D) and
+// 14 % (3D; the two differ by up to 3.6 % at 0.5 ms) and J drifts by -3.8e-4 (2D) and +6.5e-3 (3D):
+// 11 cells across r_e diffuse the star. The 2 ms comparison wants dx <= 0.5 (8x the 3D cost).
+TEST(RotatingStarGrids, EvolutionIn2DCylindricalAnd3DCartesianAgrees) {
+  const auto cyl = evolve({"Grid::ncells=[16,16,1]", "Grid::block_size=[8,8,1]", "Grid::xmax=[16,16,6.283185307179586]"}, 30);
+  const auto car = evolve(cartesian_3d(32, 16), 30);
+  double drho = 0, dJ2 = 0, dJ3 = 0;
+  for (const auto& row : cyl) {
+    // The 3D series interpolated linearly to the 2D row's time (the grids' time steps differ).
+    for (std::size_t k = 1; k < car.size(); ++k)
+      if (car[k - 1].time <= row.time && row.time <= car[k].time) {
+        const double w = (row.time - car[k - 1].time) / (car[k].time - car[k - 1].time);
+        const double rho3 = ((1 - w) * car[k - 1].rho_c + w * car[k].rho_c) / car[0].rho_c;
+        drho = std::max(drho, std::abs(row.rho_c / cyl[0].rho_c - rho3));
+      }
+  }
+  for (const auto& r : cyl) dJ2 = std::max(dJ2, std::abs(r.rotation.J / cyl[0].rotation.J - 1));
+  for (const auto& r : car) dJ3 = std::max(dJ3, std::abs(r.rotation.J / car[0].rotation.J - 1));
+  std::printf("30 steps (t = %.2f, %.2f): max |rho_c/rho_c(0)| difference 2D - 3D %.2e; J drift 2D %.2e, 3D %.2e; rho_c/rho_c(0) at the end %.4f, %.4f\n",
+              cyl.back().time, car.back().time, drho, dJ2, dJ3, cyl.back().rho_c / cyl[0].rho_c, car.back().rho_c / car[0].rho_c);
+  EXPECT_LT(drho, 1e-2);  // measured 5.4e-3 while rho_c itself falls by 3-4 % (dx = 1)
+  EXPECT_LT(dJ2, 1e-4);
+  EXPECT_LT(dJ3, 3e-3);
+}
+
+}  // namespace
