@@ -11,6 +11,14 @@
 // XNS's: masses 5e-4, J 2.9e-3, T/|W| 2.2e-3, r_e and R_circ 2.7e-3 and 2.4e-3, r_p 0.080 = one
 // XNS cell. The tool example (--omega=0.02633) is this model; the fixed-Omega iteration
 // diverged on it before the Omega ramp became linear in Omega^2 and the axis-ratio fallback existed.
+//
+// RNS (Stergioulas & Friedman 1995; github.com/cgca/rns, source/rns.v2.0/sample.out, example 2a,
+// the check against Cook, Shapiro & Teukolsky 1994, ApJ 422, 227, Table 3): the full-GR sequence of
+// an N = 1 polytrope at central energy density e_c = 0.137 in polytropic units (K = 1), from
+// r_p/r_e = 1 to the Kepler limit, printed to three digits. With K = 100 masses and radii scale by
+// K^(1/2) = 10, Omega by 1/10 and e_c by 1/100: rho_c = 1.2209324e-3 (e = rho + K rho^2). These are
+// GR models, ours are xCFC: the differences hold the conformal-flatness error (< 0.3 % here) and
+// the table's rounding (half a unit of its last digit).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,6 +76,29 @@ TEST(PublishedModels, FixedOmegaNearMassShedding) {
   EXPECT_NEAR(m.globals().omega_c, 0.0264, 1e-9 * 0.0264);
   EXPECT_GT(m.globals().axis_ratio, 0.576);  // the shedding ratio
   EXPECT_LT(m.globals().axis_ratio, 0.603);  // BU8's, at a lower Omega
+}
+
+TEST(PublishedModels, RnsPolytropeSequenceInFullGr) {
+  struct Row {
+    double ratio, M, M0, R_e, spin;  // RNS's columns ratio, M, M_0, r_star (circumferential), spin (Omega), K = 1
+  };
+  const Row rns[] = {{1.000, 0.138, 0.148, 0.967, 0.000}, {0.900, 0.144, 0.155, 1.020, 0.147}, {0.800, 0.152, 0.164, 1.088, 0.203},
+                     {0.700, 0.160, 0.173, 1.181, 0.239}, {0.600, 0.167, 0.180, 1.320, 0.257}};
+  const auto slice = remnant::tov::polytrope_slice(100.0, 2.0, 0.5);
+  for (const Row& r : rns) {
+    RnsParameters p;
+    p.rho_central = 1.2209324e-3;
+    p.axis_ratio = r.ratio;
+    p.nr = 400;  // 1e-4 from the default resolution's values: far below the table's digits
+    const RnsGlobals g = RotatingStarModel(*slice, p).globals();
+    std::printf("r_p/r_e %.2f: M %.4f (RNS %.2f) M_0 %.4f (%.2f) R_e %.3f (%.2f) Omega %.5f (%.4f)\n", r.ratio, g.M_komar, 10 * r.M,
+                g.M_rest, 10 * r.M0, g.R_circ, 10 * r.R_e, g.omega_c, 0.1 * r.spin);
+    // Half a unit of the printed digit (K = 1: 5e-4; times 10 or 1/10) plus 0.3 % for CFC vs GR.
+    EXPECT_NEAR(g.M_komar, 10 * r.M, 5e-3 + 3e-3 * 10 * r.M);
+    EXPECT_NEAR(g.M_rest, 10 * r.M0, 5e-3 + 3e-3 * 10 * r.M0);
+    EXPECT_NEAR(g.R_circ, 10 * r.R_e, 5e-3 + 3e-3 * 10 * r.R_e);
+    EXPECT_NEAR(g.omega_c, 0.1 * r.spin, 5e-5 + 3e-3 * 0.1 * r.spin);
+  }
 }
 
 }  // namespace
