@@ -71,9 +71,9 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   d.outflow = outflow;
   d.atmosphere_source = source;
   d.mass_budget = mass_g + outflow - source;
-  if (ctx.param<bool>("Analysis", "rotation")) {
+  if (ctx.param<bool>("Analysis", "rotation")) {  // computed by Analysis_Rotation just before
     d.has_rotation = true;
-    d.rotation = rotation_diagnostics(ctx);
+    d.rotation = ctx.service<RotationDiagnostics>("Analysis::rotation_now");
   }
   return d;
 }
