@@ -9,7 +9,7 @@ double reflection_parity(const std::string& v, int d) {
       return v[prefix.size() + 1] - '0';
     return -1;
   };
-  for (const char* p : {"vel", "Bvec"}) {
+  for (const char* p : {"vel", "Bvec", "St"}) {
     const int c = vector_index(p);
     if (c >= 0) return c == d ? -1.0 : 1.0;
   }
