@@ -21,7 +21,9 @@ void check_magnetic_field(const Context& ctx, SourceData& src, std::vector<std::
         if (L.valid[q]) bmax = std::max(bmax, std::abs(it->second[q]));
     }
   if (bmax > 0 && !ctx.param<bool>("HandOff", "ignore_magnetic_field")) {
-    const std::string file = src.file_of.count("Bvec[0]") ? src.file_of.at("Bvec[0]") : "the data";
+    std::string file = "the data";
+    for (int c = 2; c >= 0; --c)
+      if (src.file_of.count("Bvec[" + std::to_string(c) + "]")) file = src.file_of.at("Bvec[" + std::to_string(c) + "]");
     throw RunError("HandOff: " + file + ": the data hold a magnetic field (HydroBase::Bvec, max |B| = " + std::to_string(bmax) +
                    "), but HandOff does not import magnetic fields and this run evolves none; set "
                    "HandOff::ignore_magnetic_field = true to hand off the fluid alone");

@@ -30,8 +30,8 @@ std::string file_of(const SourceData& s, const std::string& v) {
 
 void require(const SourceData& s, const std::string& v, const MissingPolicy& p, const std::string& instead) {
   if (!s.has(v) && !p.from_eos)
-    throw RunError("HandOff: the data have no '" + v + "' and HandOff::missing_variables = error (with from_eos, " +
-                   instead + ")");
+    throw RunError("HandOff: the data (" + file_of(s, "rho") + (s.file_of.size() > 1 ? " and others" : "") +
+                   ") have no variable '" + v + "' and HandOff::missing_variables = error (with from_eos: " + instead + ")");
 }
 
 }  // namespace
