@@ -28,8 +28,10 @@ void write_text(hid_t file, const std::string& group, const std::string& name, c
 
 }  // namespace
 
-std::vector<std::string> write_synthetic_carpet(const std::string& dir, const SyntheticCarpet& spec, const Field& f) {
+std::vector<std::string> write_synthetic_carpet(const std::string& dir, const SyntheticCarpet& spec, const Field& f,
+                                                bool write) {
   std::vector<std::string> paths{dir + "/" + spec.stem + ".file_0.h5", dir + "/" + spec.stem + ".file_1.h5"};
+  if (!write) return paths;
   hid_t files[2];
   for (int i = 0; i < 2; ++i) {
     files[i] = H5Fcreate(paths[static_cast<std::size_t>(i)].c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);

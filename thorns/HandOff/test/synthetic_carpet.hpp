@@ -36,7 +36,8 @@ struct SyntheticCarpet {
   std::string stem = "data";
 };
 
-// Returns the paths written (two files).
-std::vector<std::string> write_synthetic_carpet(const std::string& dir, const SyntheticCarpet& spec, const Field& f);
+// Returns the paths written (two files); with write = false only the paths (other MPI ranks).
+std::vector<std::string> write_synthetic_carpet(const std::string& dir, const SyntheticCarpet& spec, const Field& f,
+                                                bool write = true);
 
 }  // namespace remnant::handoff::synthetic

@@ -5,6 +5,7 @@
 // discretisation error, and after XCFC's re-solve from the conserved variables rho_c, psi_c and
 // alpha_c agree with the TOV solution to the grid's discretisation error.
 #include <gtest/gtest.h>
+#include <mpi.h>
 
 #include <cmath>
 #include <cstdio>
@@ -35,8 +36,12 @@ struct TovCarpet {
   // omega: rigid rotation v = omega (-y, x, 0) inside the star (the data then have a mirror at
   // z = 0 only); b: a uniform Bvec^z of this strength.
   explicit TovCarpet(const std::vector<std::string>& variables, double omega = 0, double b = 0) {
-    dir = std::filesystem::temp_directory_path() / ("handoff_tov_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
+    // One folder for all ranks (rank 0's pid); rank 0 writes the files.
+    long pid = static_cast<long>(::getpid());
+    MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    dir = std::filesystem::temp_directory_path() / ("handoff_tov_" + std::to_string(pid));
+    if (rank == 0) std::filesystem::create_directories(dir);
     handoff::synthetic::SyntheticCarpet spec;
     spec.variables = variables;
     // Level 0: spacing 1 to 15.5 (avoid-origin points); level 1: spacing 0.5 to 10, the star's
@@ -59,9 +64,14 @@ struct TovCarpet {
       if (v == "ADMBASE::alp") return p.alpha;
       if (v == "ADMBASE::gxx" || v == "ADMBASE::gyy" || v == "ADMBASE::gzz") return std::pow(p.psi, 4);
       return 0.0;  // velocities, off-diagonal metric
-    });
+    }, rank == 0);
+    MPI_Barrier(MPI_COMM_WORLD);
   }
-  ~TovCarpet() { std::filesystem::remove_all(dir); }
+  ~TovCarpet() {
+    MPI_Barrier(MPI_COMM_WORLD);
+    if (rank == 0) std::filesystem::remove_all(dir);
+  }
+  int rank = 0;
 };
 
 const std::vector<std::string> kAll = {"HYDROBASE::rho", "HYDROBASE::press", "HYDROBASE::eps", "HYDROBASE::vel[0]",
