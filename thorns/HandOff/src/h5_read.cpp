@@ -50,7 +50,7 @@ std::string attr_string(hid_t obj, const char* name, const std::string& file, co
     H5free_memory(s);
     return out;
   }
-  const std::size_t n = H5Tget_size(t);
+  const std::size_t n = H5Tget_size(t) + 1;  // room for the terminator of a null-terminated memory string
   std::string out(n, '\0');
   Handle mt(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(mt, n);
@@ -93,7 +93,7 @@ std::string read_string_dataset(hid_t loc, const std::string& name, const std::s
     H5free_memory(c);
     return out;
   }
-  const std::size_t size = H5Tget_size(t);
+  const std::size_t size = H5Tget_size(t) + 1;
   const hssize_t npts = H5Sget_simple_extent_npoints(s);
   std::string out(size * static_cast<std::size_t>(npts > 0 ? npts : 1), '\0');
   Handle mt(H5Tcopy(H5T_C_S1), H5Tclose);

@@ -1,5 +1,6 @@
 #include "read_source.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "EOS/eos.hpp"
@@ -39,6 +40,8 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
   const auto files = expand_file_patterns(ctx.param<std::vector<std::string>>("HandOff", "files"));
   const auto& format = ctx.param<std::string>("HandOff", "format");
   auto src = std::make_shared<SourceData>();
+  std::array<bool, 3> mirrors{false, false, false};
+  for (const auto& r : ctx.param<std::vector<std::string>>("HandOff", "reflection")) mirrors[static_cast<std::size_t>(r[0] - 'x')] = true;
   if (format == "carpet") {
     CarpetOptions o;
     o.files = files;
@@ -46,11 +49,11 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
     o.variables = {"rho", "press", "eps", "temperature", "Ye", "vel[0]", "vel[1]", "vel[2]", "Bvec[0]", "Bvec[1]", "Bvec[2]",
                    "alp", "gxx", "gxy", "gxz", "gyy", "gyz", "gzz"};
     o.required = {"rho"};
-    for (const auto& r : ctx.param<std::vector<std::string>>("HandOff", "reflection")) o.reflection[static_cast<std::size_t>(r[0] - 'x')] = true;
+    o.reflection = mirrors;
     o.buffer_zones = static_cast<int>(ctx.param<std::int64_t>("HandOff", "buffer_zones"));
     *src = read_carpet(o);
   } else {
-    *src = read_remnant_volume(files);
+    *src = read_remnant_volume(files, mirrors);
   }
   check_magnetic_field(ctx, *src, notes);
   MissingPolicy policy;
