@@ -84,7 +84,14 @@ double TargetDomain::fraction_inside(const Point3& X, double h) const {
     const auto ud = static_cast<std::size_t>(d);
     if (d >= dimension && coords::is_angle(coordinates, d)) continue;
     const int a = cartesian_axis(coordinates, d);
-    if (a >= 0) {
+    // The spherical equator theta = pi/2 is the plane z = 0.
+    const bool equator_hi = coordinates == CoordinateSystem::spherical && d == 1 && std::abs(hi[1] - std::numbers::pi / 2) < 1e-12;
+    const bool equator_lo = coordinates == CoordinateSystem::spherical && d == 1 && std::abs(lo[1] - std::numbers::pi / 2) < 1e-12;
+    if (equator_hi || equator_lo) {  // overlap of [z - h/2, z + h/2] with z >= 0 (or z <= 0)
+      const double z = X[2];
+      const double overlap = equator_hi ? (z + h / 2) - std::max(z - h / 2, 0.0) : std::min(z + h / 2, 0.0) - (z - h / 2);
+      f *= std::clamp(overlap / h, 0.0, 1.0);
+    } else if (a >= 0) {
       const double c = X[static_cast<std::size_t>(a)];
       const double overlap = std::min(c + h / 2, hi[ud]) - std::max(c - h / 2, lo[ud]);
       f *= std::clamp(overlap / h, 0.0, 1.0);

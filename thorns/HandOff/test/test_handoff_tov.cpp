@@ -157,6 +157,14 @@ TEST(HandOffTOV, CarpetToCylindrical2D) {
   check(data, r, "3D Carpet -> 2D cylindrical", 2e-2, 2e-3, 2e-3);
 }
 
+TEST(HandOffTOV, CarpetToSpherical2D) {
+  const TovCarpet data(kAll);
+  const Result r = hand_off(data, {"Grid::coordinates=spherical", "Grid::ncells=[48,16,1]", "Grid::block_size=[16,16,1]",
+                                   "Grid::xmax=[12,1.5707963267948966,6.283185307179586]",
+                                   "Grid::boundary_lower=[origin,axis,outflow]", "Grid::boundary_upper=[outflow,reflect,outflow]"});
+  check(data, r, "3D Carpet -> 2D spherical (equatorial mirror)", 2e-2, 2e-3, 2e-3);
+}
+
 TEST(HandOffTOV, CarpetToCartesian3DOctant) {
   const TovCarpet data(kAll);
   const Result r = hand_off(data, {"Grid::coordinates=cartesian", "Grid::dimension=3", "Grid::ncells=[24,24,24]",
