@@ -128,7 +128,7 @@ void initial(Context& ctx) {
     const vars::HydroBase::prim prim(ctx, *b);
     const vars::Spacetime::metric metric(ctx, *b);
     const vars::HandOff::imported imp(ctx, *b);
-    const vars::HandOff::source_metric sm(ctx, *b);
+    const vars::HandOff::source_at_cells sm(ctx, *b);
     const CoordinateSystem cs = b->coordinates;
     for_interior(*b, [&](int i, int j, int k) {
       const Point3 x = cell_point(*b, i, j, k);
@@ -144,6 +144,7 @@ void initial(Context& ctx) {
       imp.tau(i, j, k) = c.cons[4];
       imp.DYe(i, j, k) = c.cons[5];
       mass += c.cons[0] * b->cell_volume(i, j, k);
+      sm.rho(i, j, k) = c.hits ? c.rho : 0.0;
       sm.gamma13(i, j, k) = c.hits ? c.gamma13 : 0.0;
       sm.alpha(i, j, k) = c.hits ? c.alp : 0.0;
       sm.covered(i, j, k) = static_cast<double>(c.hits) / c.samples;

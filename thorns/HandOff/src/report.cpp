@@ -7,6 +7,7 @@
 
 #include "HandOff/handoff_state.hpp"
 #include "import.hpp"
+#include "profiles.hpp"
 #include "remnant/cell_geometry.hpp"
 #include "remnant/vars/HandOff.hpp"
 #include "remnant/vars/HydroBase.hpp"
@@ -62,7 +63,7 @@ void report(Context& ctx) {
     const vars::HydroBase::prim prim(ctx, *b);
     const vars::HydroBase::cons cons(ctx, *b);
     const vars::Spacetime::metric metric(ctx, *b);
-    const vars::HandOff::source_metric sm(ctx, *b);
+    const vars::HandOff::source_at_cells sm(ctx, *b);
     for_interior(*b, [&](int i, int j, int k) {
       const double psi4 = std::pow(metric.psi(i, j, k), 4);
       if (prim.rho(i, j, k) > mine.rho) {
@@ -124,6 +125,7 @@ void report(Context& ctx) {
     lines.push_back(line("alpha_3d_centre", r.alpha3d_c, "3D lapse there"));
   }
   for (const auto& l : lines) ctx.info("HandOff: " + l);
+  write_profiles(ctx, ctx.out_dir() + "/handoff_profiles.tsv");
   if (ctx.rank() == 0) {
     const std::string path = ctx.out_dir() + "/handoff_report.txt";
     std::ofstream out(path);

@@ -10,7 +10,9 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <array>
 #include <fstream>
+#include <sstream>
 #include <span>
 #include <string>
 #include <unistd.h>
@@ -82,6 +84,7 @@ struct Result {
   handoff::HandOffReport report;
   analysis::StarDiagnostics first;
   std::string report_text;
+  std::vector<std::array<double, 11>> profiles;  // handoff_profiles.tsv
 };
 
 Result hand_off(const TovCarpet& data, std::vector<std::string> overrides) {
@@ -108,6 +111,15 @@ Result hand_off(const TovCarpet& data, std::vector<std::string> overrides) {
   r.first = sim.context().service<analysis::History>("Analysis::history").rows.front();
   std::ifstream in(out / "handoff_report.txt");
   r.report_text.assign(std::istreambuf_iterator<char>(in), {});
+  std::ifstream prof(out / "handoff_profiles.tsv");
+  std::string row;
+  while (std::getline(prof, row)) {
+    if (row.empty() || row[0] == '#') continue;
+    std::istringstream fields(row);
+    std::array<double, 11> v{};
+    for (double& x : v) fields >> x;
+    r.profiles.push_back(v);
+  }
   return r;
 }
 
@@ -140,6 +152,17 @@ void check(const TovCarpet& data, const Result& r, const char* name, double rho_
   EXPECT_LT(h.alpha_max_rel, 10 * alpha_tol);
   EXPECT_NE(r.report_text.find("psi4_vs_gamma13_max"), std::string::npos);
   EXPECT_NE(r.report_text.find("outside_fraction"), std::string::npos);
+  // Profiles along the grid's first two directions: 3D data and grid side by side.
+  int lines[2] = {0, 0};
+  for (const auto& v : r.profiles) {
+    lines[static_cast<int>(v[0])]++;
+    if (v[5] > 0.5 * c.rho) {  // inside the star: the re-solved grid against the 3D data at the same cell
+      EXPECT_NEAR(v[6] / v[5], 1.0, 3 * rho_tol) << "line " << v[0] << " at " << v[1];
+      EXPECT_NEAR(v[8] / v[7], 1.0, 10 * psi_tol) << "line " << v[0] << " at " << v[1];
+    }
+  }
+  EXPECT_GE(lines[0], 12);
+  EXPECT_GE(lines[1], 12);
 }
 
 std::string error_of(const TovCarpet& data, std::vector<std::string> overrides) {
