@@ -49,28 +49,33 @@ bool parse_dataset_name(const std::string& s, std::string& var, std::int64_t& it
   return have_it && have_rl;
 }
 
-// ReflectionSymmetry::reflection_x = "yes" in Carpet's parameter dump, when the file has one.
-void reflection_from_parameters(hid_t file, const std::string& path, std::array<bool, 3>& refl) {
+// Carpet's parameter dump ("Parameters and Global Attributes/All Parameters", text or bytes),
+// lower case; empty when the file has none.
+std::string parameter_dump(hid_t file, const std::string& path) {
   const std::string group = "Parameters and Global Attributes";
-  if (!h5::exists(file, group) || !h5::exists(file, group + "/All Parameters")) return;
+  if (!h5::exists(file, group) || !h5::exists(file, group + "/All Parameters")) return "";
   std::string text;
   try {
     h5::Handle g(H5Gopen2(file, group.c_str(), H5P_DEFAULT), H5Gclose);
-    text = h5::read_string_dataset(g, "All Parameters", path);
+    text = h5::read_text_dataset(g, "All Parameters", path);
   } catch (const RunError&) {
-    return;
+    return "";
   }
-  std::string lower(text);
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char ch) { return std::tolower(ch); });
-  for (int d = 0; d < 3; ++d) {
-    const std::string key = std::string("reflectionsymmetry::reflection_") + static_cast<char>('x' + d);
-    const auto pos = lower.find(key);
-    if (pos == std::string::npos) continue;
-    const auto eol = lower.find('\n', pos);
-    const std::string line = lower.substr(pos, eol == std::string::npos ? std::string::npos : eol - pos);
-    if (line.find("yes") != std::string::npos || line.find("true") != std::string::npos || line.find("= 1") != std::string::npos)
-      refl[static_cast<std::size_t>(d)] = true;
-  }
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  return text;
+}
+
+// A boolean Cactus parameter ("thorn::name = yes") of the dump; -1 when absent.
+int dump_flag(const std::string& dump, const std::string& key) {
+  const auto pos = dump.find(key);
+  if (pos == std::string::npos) return -1;
+  const auto eol = dump.find('\n', pos);
+  const std::string line = dump.substr(pos, eol == std::string::npos ? std::string::npos : eol - pos);
+  const auto eq = line.find('=');
+  if (eq == std::string::npos) return -1;
+  const std::string v = line.substr(eq + 1);
+  if (v.find("yes") != std::string::npos || v.find("true") != std::string::npos || v.find('1') != std::string::npos) return 1;
+  return 0;
 }
 
 std::string join(const std::set<std::int64_t>& s) {
@@ -126,10 +131,18 @@ SourceData read_carpet(const CarpetOptions& opt) {
   // Index every dataset: variable -> iteration -> datasets.
   std::map<std::string, std::map<std::int64_t, std::vector<DatasetRef>>> index;
   std::array<bool, 3> refl = opt.reflection;
+  bool ghosts_in_files = true;
   const std::set<std::string> wanted(opt.variables.begin(), opt.variables.end());
   for (const auto& file : opt.files) {
     h5::Handle f = h5::open_file(file);
-    if (opt.reflection_from_file) reflection_from_parameters(f, file, refl);
+    const std::string dump = parameter_dump(f, file);
+    if (opt.reflection_from_file)
+      for (int d = 0; d < 3; ++d)
+        if (dump_flag(dump, std::string("reflectionsymmetry::reflection_") + static_cast<char>('x' + d)) == 1)
+          refl[static_cast<std::size_t>(d)] = true;
+    // Ghost zones are in the files unless CarpetIOHDF5::output_ghost_points (or out3D_ghosts) is off.
+    if (dump_flag(dump, "carpetiohdf5::output_ghost_points") == 0 || dump_flag(dump, "carpetiohdf5::out3d_ghosts") == 0)
+      ghosts_in_files = false;
     for (const auto& name : h5::dataset_names(f)) {
       std::string var;
       std::int64_t it = 0;
@@ -201,7 +214,7 @@ SourceData read_carpet(const CarpetOptions& opt) {
       const auto origin = h5::attr_doubles(d, "origin", r.file, r.name);
       const auto delta = h5::attr_doubles(d, "delta", r.file, r.name);
       std::vector<long long> ghosts{0, 0, 0};
-      if (h5::has_attr(d, "cctk_nghostzones")) ghosts = h5::attr_ints(d, "cctk_nghostzones", r.file, r.name);
+      if (h5::has_attr(d, "cctk_nghostzones") && ghosts_in_files) ghosts = h5::attr_ints(d, "cctk_nghostzones", r.file, r.name);
       if (!have_time && h5::has_attr(d, "time")) out.time = h5::attr_doubles(d, "time", r.file, r.name).at(0), have_time = true;
       if (shape.size() != 3 || origin.size() != 3 || delta.size() != 3 || ghosts.size() != 3)
         throw RunError("HandOff: " + r.file + ": dataset '" + r.name + "' is not 3D data (HandOff reads 3D Carpet output)");
@@ -213,11 +226,17 @@ SourceData read_carpet(const CarpetOptions& opt) {
         comp.ghosts[static_cast<std::size_t>(a)] = static_cast<int>(ghosts[static_cast<std::size_t>(a)]);
         comp.n[static_cast<std::size_t>(a)] = static_cast<int>(shape[static_cast<std::size_t>(2 - a)]);
       }
+      if (h5::has_attr(d, "cctk_bbox")) {  // 1 on faces of the grid's outer (or symmetry) boundary
+        const auto bbox = h5::attr_ints(d, "cctk_bbox", r.file, r.name);
+        if (bbox.size() == 6)
+          for (std::size_t q = 0; q < 6; ++q) comp.outer[q] = static_cast<int>(bbox[q]);
+      }
       comp.where = r.file + ": " + r.name;
       builder.add(v, std::move(comp), std::move(data));
     }
   }
   out.levels = builder.build();
+  out.ghosts_in_files = ghosts_in_files;
   return out;
 }
 

@@ -104,6 +104,22 @@ std::string read_string_dataset(hid_t loc, const std::string& name, const std::s
   return out;
 }
 
+std::string read_text_dataset(hid_t loc, const std::string& name, const std::string& file) {
+  Quiet q;
+  Handle d(H5Dopen2(loc, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!d.ok()) throw RunError("HandOff: " + file + ": no dataset '" + name + "'");
+  Handle t(H5Dget_type(d), H5Tclose);
+  if (H5Tget_class(t) == H5T_STRING) return read_string_dataset(loc, name, file);
+  if (H5Tget_class(t) != H5T_INTEGER || H5Tget_size(t) != 1) throw RunError("HandOff: " + file + ": '" + name + "' is not text");
+  Handle s(H5Dget_space(d), H5Sclose);
+  const hssize_t n = H5Sget_simple_extent_npoints(s);
+  std::string out(static_cast<std::size_t>(n > 0 ? n : 0), '\0');
+  if (n > 0 && H5Dread(d, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+    throw RunError("HandOff: " + file + ": cannot read '" + name + "'");
+  while (!out.empty() && out.back() == '\0') out.pop_back();
+  return out;
+}
+
 bool exists(hid_t loc, const std::string& path) {
   Quiet q;
   return H5Lexists(loc, path.c_str(), H5P_DEFAULT) > 0;

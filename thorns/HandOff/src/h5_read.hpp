@@ -51,6 +51,8 @@ std::string attr_string(hid_t obj, const char* name, const std::string& file, co
 std::vector<double> read_dataset(hid_t loc, const std::string& name, const std::string& file,
                                  std::vector<hsize_t>* shape = nullptr);
 std::string read_string_dataset(hid_t loc, const std::string& name, const std::string& file);
+// A string dataset, or a 1-byte integer array holding text (Carpet's parameter dump).
+std::string read_text_dataset(hid_t loc, const std::string& name, const std::string& file);
 bool exists(hid_t loc, const std::string& path);
 // Names of the datasets directly under loc.
 std::vector<std::string> dataset_names(hid_t loc);

@@ -131,11 +131,18 @@ std::vector<SourceLevel> LevelBuilder::build() const {
           off[a] = lattice_index(p.c.origin[a], lo[a], L.delta[a], p.c.where);
           const bool at_lower = off[a] == 0, at_upper = off[a] + p.c.n[a] == L.n[a];
           const bool outer_level = lev == coarsest;
-          const int strip = p.c.ghosts[a], strip_edge = outer_level ? 0 : p.c.ghosts[a] + buffer_;
+          // Points a face loses: none on the grid's outer boundary (cctk_bbox, else the coarsest
+          // level's edge); the ghosts elsewhere, and the buffer zones on a refined level's edge.
+          auto strip = [&](int side, bool at_edge) {
+            const int known = p.c.outer[2 * a + static_cast<std::size_t>(side)];
+            const bool outer = known >= 0 ? known == 1 : outer_level && at_edge;
+            if (outer) return 0;
+            return p.c.ghosts[a] + (at_edge && !outer_level ? buffer_ : 0);
+          };
           // A lower face reaching below a reflection plane: its symmetry ghosts go by position.
           const bool symmetry_face = reflection_[a] && p.c.origin[a] < -kLatticeTolerance * L.delta[a];
-          first[a] = symmetry_face ? 0 : (at_lower ? strip_edge : strip);
-          last[a] = p.c.n[a] - 1 - (at_upper ? strip_edge : strip);
+          first[a] = symmetry_face ? 0 : strip(0, at_lower);
+          last[a] = p.c.n[a] - 1 - strip(1, at_upper);
         }
         for (int k = first[2]; k <= last[2]; ++k)
           for (int j = first[1]; j <= last[1]; ++j)

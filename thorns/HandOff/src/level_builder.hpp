@@ -16,6 +16,7 @@ struct Component {
   std::array<double, 3> origin{0, 0, 0}, delta{1, 1, 1};
   std::array<int, 3> n{0, 0, 0};       // nodes, ghosts included
   std::array<int, 3> ghosts{0, 0, 0};  // removed on faces inside the domain (cctk_nghostzones)
+  std::array<int, 6> outer{-1, -1, -1, -1, -1, -1};  // cctk_bbox: 1 on the grid's outer faces, -1 unknown
   std::string where;                   // "file: dataset" for messages
 };
 

@@ -16,6 +16,15 @@ void attr(hid_t obj, const char* name, hid_t type, const void* data, hsize_t n) 
   H5Aclose(a), H5Sclose(s);
 }
 
+void write_bytes(hid_t file, const std::string& group, const std::string& name, const std::string& text) {
+  const hid_t g = H5Gcreate2(file, group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const hsize_t n = text.size();
+  const hid_t s = H5Screate_simple(1, &n, nullptr);
+  const hid_t d = H5Dcreate2(g, name.c_str(), H5T_NATIVE_UCHAR, s, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  H5Dwrite(d, H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL, H5P_DEFAULT, text.data());
+  H5Dclose(d), H5Sclose(s), H5Gclose(g);
+}
+
 void write_text(hid_t file, const std::string& group, const std::string& name, const std::string& text) {
   const hid_t g = H5Gcreate2(file, group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   const hid_t t = H5Tcopy(H5T_C_S1);
@@ -42,10 +51,11 @@ std::vector<std::string> write_synthetic_carpet(const std::string& dir, const Sy
     for (int d = 0; d < 3; ++d)
       text += std::string("ReflectionSymmetry::reflection_") + static_cast<char>('x' + d) + " = \"" +
               (spec.reflection[static_cast<std::size_t>(d)] ? "yes" : "no") + "\"\n";
-    write_text(files[0], "Parameters and Global Attributes", "All Parameters", text);
+    if (!spec.ghosts_written) text += "CarpetIOHDF5::output_ghost_points = \"no\"\n";
+    (spec.parameters_as_bytes ? write_bytes : write_text)(files[0], "Parameters and Global Attributes", "All Parameters", text);
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const int ng = spec.ghosts, nb = spec.buffer;
+  const int ng = spec.ghosts_written ? spec.ghosts : 0, nb = spec.buffer;
   for (std::size_t l = 0; l < spec.levels.size(); ++l) {
     const LevelLayout& L = spec.levels[l];
     const int half = L.nodes[static_cast<std::size_t>(L.split_dir)] / 2;
@@ -95,8 +105,16 @@ std::vector<std::string> write_synthetic_carpet(const std::string& dir, const Sy
           const double origin[3] = {L.first[0] + lo[0] * L.h, L.first[1] + lo[1] * L.h, L.first[2] + lo[2] * L.h};
           const double delta[3] = {L.h, L.h, L.h};
           const int iorigin[3] = {lo[0], lo[1], lo[2]};
-          const int ghosts[3] = {ng, ng, ng};
+          const int ghosts[3] = {spec.ghosts, spec.ghosts, spec.ghosts};  // the grid's, written or not
           const int level = static_cast<int>(l);
+          if (spec.write_bbox) {  // [x lower, x upper, y lower, ...]
+            int bbox[6];
+            for (std::size_t a = 0; a < 3; ++a) {
+              bbox[2 * a] = ilo[a] == 0 && (l == 0 || spec.reflection[a]) ? 1 : 0;
+              bbox[2 * a + 1] = ihi[a] == L.nodes[a] - 1 && l == 0 ? 1 : 0;
+            }
+            attr(d, "cctk_bbox", H5T_NATIVE_INT, bbox, 6);
+          }
           attr(d, "origin", H5T_NATIVE_DOUBLE, origin, 3);
           attr(d, "delta", H5T_NATIVE_DOUBLE, delta, 3);
           attr(d, "iorigin", H5T_NATIVE_INT, iorigin, 3);

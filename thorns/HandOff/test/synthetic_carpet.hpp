@@ -33,6 +33,9 @@ struct SyntheticCarpet {
   std::map<std::string, std::vector<std::int64_t>> iterations_of;  // per-variable override
   double time = 0;
   bool write_parameters = true;  // ReflectionSymmetry::reflection_* in "All Parameters"
+  bool parameters_as_bytes = false;  // the dump as a byte array (as CarpetIOHDF5 writes it) or a string
+  bool ghosts_written = true;     // false: CarpetIOHDF5::output_ghost_points = "no" (no ghost, no symmetry points)
+  bool write_bbox = true;         // the cctk_bbox attribute (1 on the grid's outer and symmetry faces)
   std::string stem = "data";
 };
 

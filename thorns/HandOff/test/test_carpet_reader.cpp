@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <random>
 #include <unistd.h>
 
@@ -45,7 +46,7 @@ struct Files {
   std::filesystem::path dir;
   std::vector<std::string> paths;
   synthetic::SyntheticCarpet spec;
-  Files() {
+  explicit Files(const std::function<void(synthetic::SyntheticCarpet&)>& adjust = {}) {
     dir = std::filesystem::temp_directory_path() / ("handoff_carpet_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     spec.variables = {"HYDROBASE::rho", "HYDROBASE::vel[2]", "ADMBASE::gxz"};
@@ -54,6 +55,7 @@ struct Files {
     spec.levels = {{0.5, {0.25, 0.25, 0.25}, {16, 16, 16}, 0}, {0.25, {0, 0, 0}, {15, 15, 15}, 1}};
     spec.iterations = {0, 256};
     spec.iterations_of["ADMBASE::gxz"] = {0, 256, 512};
+    if (adjust) adjust(spec);
     paths = synthetic::write_synthetic_carpet(dir.string(), spec, analytic);
   }
   ~Files() { std::filesystem::remove_all(dir); }
@@ -81,8 +83,7 @@ TEST(CarpetReader, CanonicalNames) {
   EXPECT_EQ(reflection_parity("rho", 2), 1.0);
 }
 
-TEST(CarpetReader, OctantTwoLevelsExactAtEveryPoint) {
-  const Files files;
+void expect_exact_octant(const Files& files) {
   const SourceData src = read_carpet(files.options());
   ASSERT_EQ(src.levels.size(), 2u);
   EXPECT_EQ(src.iteration, 256);  // the latest that rho, vel[2] and gxz all have
@@ -105,6 +106,22 @@ TEST(CarpetReader, OctantTwoLevelsExactAtEveryPoint) {
   }
   EXPECT_EQ(checked, 8u * 16 * 16 * 16 + 29u * 29 * 29);
   EXPECT_GT(negative, 0u);
+}
+
+TEST(CarpetReader, OctantTwoLevelsExactAtEveryPoint) { expect_exact_octant(Files()); }
+
+// CarpetIOHDF5::output_ghost_points = "no" (in a byte-array parameter dump): no ghost points in the
+// files, nothing but the refined levels' buffer zones to remove.
+TEST(CarpetReader, WithoutGhostPointsInTheFiles) {
+  expect_exact_octant(Files([](synthetic::SyntheticCarpet& s) {
+    s.ghosts_written = false;
+    s.parameters_as_bytes = true;
+  }));
+}
+
+// Files without cctk_bbox: the outer boundary is the coarsest level's edge.
+TEST(CarpetReader, WithoutBoundingBoxAttribute) {
+  expect_exact_octant(Files([](synthetic::SyntheticCarpet& s) { s.write_bbox = false; }));
 }
 
 TEST(CarpetReader, SamplerFinestLevelExactAtPointsCubicBetween) {
