@@ -258,6 +258,17 @@ TEST(HandOffTOV, BadInput) {
     EXPECT_NE(e.find(data.files.front()), std::string::npos) << e;
     EXPECT_NE(e.find("HandOff::eos_tolerance"), std::string::npos) << e;
   }
+  {  // no files, a metric initialisation that would overwrite the import, a grid HandOff cannot fill
+    std::string e = error_of(data, {"HandOff::files=[]"});
+    EXPECT_NE(e.find("HandOff::files is empty"), std::string::npos) << e;
+    e = error_of(data, {"XCFC::initial_metric=from_primitives"});
+    EXPECT_NE(e.find("XCFC::initial_metric must be from_conserved"), std::string::npos) << e;
+    EXPECT_NE(e.find("command line argument"), std::string::npos) << e;  // where it was set
+    e = error_of(data, {"Grid::coordinates=spherical", "Grid::dimension=1", "Grid::ncells=[48,1,1]", "Grid::block_size=[16,1,1]",
+                        "Grid::boundary_lower=[origin,outflow,outflow]", "Grid::xmax=[12,3.141592653589793,6.283185307179586]"});
+    EXPECT_NE(e.find("Grid::dimension"), std::string::npos) << e;
+    EXPECT_NE(e.find("HandOff fills 3D grids"), std::string::npos) << e;
+  }
   {  // files that do not exist
     const std::string e = error_of(data, {"HandOff::files=[/nonexistent/run/*.h5]"});
     EXPECT_NE(e.find("/nonexistent/run/*.h5"), std::string::npos) << e;
