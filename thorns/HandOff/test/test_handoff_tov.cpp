@@ -217,9 +217,9 @@ void check_rotation(const Result& r, const char* name) {
 }  // namespace
 
 TEST(HandOffTOV, RotatingCarpetToCylindrical2D) {
-  std::vector<std::string> vars = kAll;
-  const TovCarpet data(vars, 0.01);
+  const TovCarpet data(kAll, 0.01);
   check_rotation(hand_off(data, {}), "rotating, 3D Carpet bitant -> 2D cylindrical");
+  check_rotation(hand_off(data, {"HandOff::cell_samples=2"}), "rotating, 3D Carpet bitant -> 2D cylindrical, cell averages of 2x2 rings");
 }
 
 TEST(HandOffTOV, RotatingCarpetToCartesian3DBitant) {
