@@ -180,6 +180,17 @@ TEST(HandOffTOV, CarpetToCylindrical2D) {
   check(data, r, "3D Carpet -> 2D cylindrical", 2e-2, 2e-3, 2e-3);
 }
 
+// Under --debug the flesh poisons what a function declares it writes and checks what it leaves:
+// HandOff's declarations hold (the import keeps the atmosphere's conserved variables it reads).
+TEST(HandOffTOV, DeclarationsHoldUnderDebug) {
+  const TovCarpet data(kAll);
+  const Result plain = hand_off(data, {});
+  const Result debug = hand_off(data, {"Flesh::debug=true"});
+  EXPECT_EQ(debug.report.after.rest_mass, plain.report.after.rest_mass);
+  EXPECT_EQ(debug.report.atmosphere_initial_mass, plain.report.atmosphere_initial_mass);
+  EXPECT_EQ(debug.first.rho_c, plain.first.rho_c);
+}
+
 TEST(HandOffTOV, CarpetToSpherical2D) {
   const TovCarpet data(kAll);
   const Result r = hand_off(data, {"Grid::coordinates=spherical", "Grid::ncells=[48,16,1]", "Grid::block_size=[16,16,1]",
