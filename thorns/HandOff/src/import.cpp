@@ -56,8 +56,8 @@ void load(Context& ctx, HandOffState& st) {
   auto& r = st.report;
   r.source_all = totals(I.all), r.source_covered = totals(I.covered), r.source_grid = totals(I.grid);
   r.outside_fraction = I.outside_fraction();
-  r.has_metric = src.has("gxx");
-  r.has_lapse = src.has("alp");
+  r.has_metric = src.has_metric;
+  r.has_lapse = src.has_lapse;
   const double limit = ctx.param<double>("HandOff", "max_outside_fraction");
   if (r.outside_fraction > limit)
     throw RunError("HandOff: " + num(100 * r.outside_fraction) + " % of the 3D rest mass (M0 = " + num(r.source_all.rest_mass) +
@@ -156,8 +156,10 @@ void initial(Context& ctx) {
     const CoordinateSystem cs = b->coordinates;
     for_interior(*b, [&](int i, int j, int k) {
       const Point3 x = cell_point(*b, i, j, k);
+      // Samples on the ring: about one per 3D spacing there (the finest level at phi = 0).
       const double ring = cs == CoordinateSystem::cylindrical ? x[0] : x[0] * std::sin(x[1]);
-      const int nphi = phi_param > 0 ? phi_param : std::clamp(static_cast<int>(std::ceil(2 * std::numbers::pi * ring / h)), 8, 4096);
+      const double h_ring = t.averages_over_phi() ? sampler.spacing_at(coords::to_cartesian(cs, {x[0], x[1], 0.0})) : h;
+      const int nphi = phi_param > 0 ? phi_param : std::clamp(static_cast<int>(std::ceil(2 * std::numbers::pi * ring / h_ring)), 8, 4096);
       const CellSample c = sample_cell(sampler, t, *b, i, j, k, per_direction, nphi);
       max_phi = std::max(max_phi, c.samples);
       ++cells;

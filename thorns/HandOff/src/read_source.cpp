@@ -60,8 +60,13 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
   policy.from_eos = ctx.param<std::string>("HandOff", "missing_variables") == "from_eos";
   policy.ye = ctx.param<double>("HandOff", "ye");
   policy.eos_tolerance = ctx.param<double>("HandOff", "eos_tolerance");
+  src->has_metric = src->has("gxx");
+  src->has_lapse = src->has("alp");
   for (auto& n : complete_source(*src, ctx.service<eos::EOS>("eos"), policy)) notes.push_back(std::move(n));
   for (auto& n : add_conserved(*src)) notes.push_back(std::move(n));
+  // Only what the hand-off samples stays in memory (every rank holds all the data).
+  for (auto& L : src->levels)
+    for (const char* f : {"press", "temperature", "gxx", "gxy", "gxz", "gyy", "gyz", "gzz"}) L.fields.erase(f);
   return src;
 }
 

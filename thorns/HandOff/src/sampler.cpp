@@ -61,6 +61,15 @@ bool Sampler::sample(const Point3& X, double* out, int* level_used) const {
   return false;
 }
 
+double Sampler::spacing_at(const Point3& X) const {
+  for (auto L = src_.levels.rbegin(); L != src_.levels.rend(); ++L) {
+    int idx[3];
+    for (std::size_t a = 0; a < 3; ++a) idx[a] = static_cast<int>(std::lround((X[a] - L->origin[a]) / L->delta[a]));
+    if (L->is_valid(idx[0], idx[1], idx[2])) return L->delta[0];
+  }
+  return src_.levels.empty() ? 1.0 : src_.levels.front().delta[0];
+}
+
 bool Sampler::sample_level(const SourceLevel& L, const std::vector<const double*>& f, const Point3& X, double* out) const {
   Stencil1D s[3];
   for (int d = 0; d < 3; ++d) {

@@ -19,6 +19,8 @@ class Sampler {
   // Writes one value per field into out; false where no level has data around X.
   bool sample(const Point3& X, double* out, int* level_used = nullptr) const;
   std::size_t size() const { return nfields_; }
+  // The spacing of the finest level with data at the point nearest X (the coarsest spacing outside).
+  double spacing_at(const Point3& X) const;
 
  private:
   bool sample_level(const SourceLevel& L, const std::vector<const double*>& f, const Point3& X, double* out) const;
