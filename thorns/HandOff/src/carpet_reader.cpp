@@ -78,6 +78,12 @@ int dump_flag(const std::string& dump, const std::string& key) {
   return 0;
 }
 
+std::string join_levels(const std::set<int>& s) {
+  std::string out;
+  for (auto x : s) out += (out.empty() ? "" : ", ") + std::to_string(x);
+  return out;
+}
+
 std::string join(const std::set<std::int64_t>& s) {
   std::string out;
   for (auto x : s) out += (out.empty() ? "" : ", ") + std::to_string(x);
@@ -167,9 +173,18 @@ SourceData read_carpet(const CarpetOptions& opt) {
   if (it < 0) {
     std::set<std::int64_t> common;
     bool first = true;
+    // Iterations at which a variable has every refinement level it has anywhere: Carpet writes
+    // finer levels alone at their intermediate steps, which would leave the coarse levels out.
     for (const auto& [v, its] : index) {
+      std::set<int> all_levels;
+      for (const auto& [i, refs] : its)
+        for (const auto& r : refs) all_levels.insert(r.rl);
       std::set<std::int64_t> mine;
-      for (const auto& [i, refs] : its) mine.insert(i);
+      for (const auto& [i, refs] : its) {
+        std::set<int> levels;
+        for (const auto& r : refs) levels.insert(r.rl);
+        if (levels == all_levels) mine.insert(i);
+      }
       if (first) common = mine, first = false;
       else {
         std::set<std::int64_t> both;
@@ -184,7 +199,8 @@ SourceData read_carpet(const CarpetOptions& opt) {
         for (const auto& [i, refs] : its) mine.insert(i);
         detail += "\n  " + v + " (" + its.begin()->second.front().file + "): iterations " + join(mine);
       }
-      throw RunError("HandOff: the variables share no iteration; set HandOff::iteration to one they all have:" + detail);
+      throw RunError("HandOff: the variables share no iteration with all their refinement levels; set HandOff::iteration "
+                     "to one they all have:" + detail);
     }
     it = *common.rbegin();
   }
@@ -195,6 +211,16 @@ SourceData read_carpet(const CarpetOptions& opt) {
       throw RunError("HandOff: " + its.begin()->second.front().file + ": variable '" + v + "' has no data at iteration " +
                      std::to_string(it) + " (it has iterations " + join(mine) + "); see HandOff::iteration");
     }
+
+  for (const auto& [v, its] : index) {
+    std::set<int> all_levels, here;
+    for (const auto& [i, refs] : its)
+      for (const auto& r : refs) (i == it ? here : all_levels).insert(r.rl), all_levels.insert(r.rl);
+    if (here != all_levels)
+      throw RunError("HandOff: " + its.at(it).front().file + ": variable '" + v + "' has refinement levels " + join_levels(here) +
+                     " at iteration " + std::to_string(it) + " but levels " + join_levels(all_levels) +
+                     " elsewhere (Carpet writes finer levels alone between coarse steps); choose another HandOff::iteration");
+  }
 
   // Read the components and build the levels.
   LevelBuilder builder(refl, opt.buffer_zones);

@@ -75,7 +75,9 @@ std::vector<std::string> write_synthetic_carpet(const std::string& dir, const Sy
       const std::array<int, 3> n{hi[0] - lo[0] + 1, hi[1] - lo[1] + 1, hi[2] - lo[2] + 1};
       for (const auto& var : spec.variables) {
         const auto found = spec.iterations_of.find(var);
-        const auto& its = found != spec.iterations_of.end() ? found->second : spec.iterations;
+        std::vector<std::int64_t> its = found != spec.iterations_of.end() ? found->second : spec.iterations;
+        const auto extra = spec.extra_iterations_of_level.find(static_cast<int>(l));
+        if (extra != spec.extra_iterations_of_level.end()) its.insert(its.end(), extra->second.begin(), extra->second.end());
         for (const std::int64_t it : its) {
           std::vector<double> data(static_cast<std::size_t>(n[0]) * static_cast<std::size_t>(n[1]) * static_cast<std::size_t>(n[2]));
           std::size_t q = 0;

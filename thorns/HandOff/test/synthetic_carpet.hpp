@@ -31,6 +31,7 @@ struct SyntheticCarpet {
   std::vector<std::string> variables;
   std::vector<std::int64_t> iterations{0};
   std::map<std::string, std::vector<std::int64_t>> iterations_of;  // per-variable override
+  std::map<int, std::vector<std::int64_t>> extra_iterations_of_level;  // more iterations a level alone has
   double time = 0;
   bool write_parameters = true;  // ReflectionSymmetry::reflection_* in "All Parameters"
   bool parameters_as_bytes = false;  // the dump as a byte array (as CarpetIOHDF5 writes it) or a string

@@ -55,6 +55,7 @@ struct Files {
     spec.levels = {{0.5, {0.25, 0.25, 0.25}, {16, 16, 16}, 0}, {0.25, {0, 0, 0}, {15, 15, 15}, 1}};
     spec.iterations = {0, 256};
     spec.iterations_of["ADMBASE::gxz"] = {0, 256, 512};
+    spec.extra_iterations_of_level[1] = {384};  // the finer level alone (Carpet's intermediate steps)
     if (adjust) adjust(spec);
     paths = synthetic::write_synthetic_carpet(dir.string(), spec, analytic);
   }
@@ -86,7 +87,7 @@ TEST(CarpetReader, CanonicalNames) {
 void expect_exact_octant(const Files& files) {
   const SourceData src = read_carpet(files.options());
   ASSERT_EQ(src.levels.size(), 2u);
-  EXPECT_EQ(src.iteration, 256);  // the latest that rho, vel[2] and gxz all have
+  EXPECT_EQ(src.iteration, 256);  // the latest that rho, vel[2] and gxz all have on every level (not 384)
   EXPECT_TRUE(src.reflection[0] && src.reflection[1] && src.reflection[2]);
   std::size_t checked = 0, negative = 0;
   for (const auto& L : src.levels) {
@@ -210,6 +211,17 @@ TEST(CarpetReader, Errors) {
     EXPECT_NE(m.find("iteration 512"), std::string::npos) << m;
     EXPECT_NE(m.find("0, 256"), std::string::npos) << m;
     EXPECT_NE(m.find(".h5"), std::string::npos) << m;
+  }
+  // An iteration at which only the finer level was written.
+  o = files.options();
+  o.iteration = 384;
+  try {
+    read_carpet(o);
+    FAIL() << "no error for an iteration without the coarse level";
+  } catch (const RunError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("refinement levels 1 at iteration 384 but levels 0, 1"), std::string::npos) << m;
+    EXPECT_NE(m.find("HandOff::iteration"), std::string::npos) << m;
   }
   // Missing files.
   EXPECT_THROW(expand_file_patterns({files.dir.string() + "/nothing*.h5"}), RunError);
