@@ -94,7 +94,7 @@ TEST(HandOffRoundTrip, Remnant3DOctantToCylindrical2D) {
 // with a mirror at z = 0 (parfiles/handoff_source_rns_3d.yaml, spacing 1 and 0.5), handed to 2D
 // cylindrical (spacing 0.25), against RotatingStar's own 2D model on parfiles/rns_uniform_cyl_2d.yaml
 // (spacing 0.25 around the star): rho_c, M0 and J converge to it with the 3D resolution, and at 0.5
-// agree to 1.5 %, 5e-4 and 1.5e-3.
+// agree to 1.5 %, 5e-4 and 1.5e-3; handed to 2D spherical instead, the same to 2 %, 5e-4, 2e-3.
 TEST(HandOffRoundTrip, RotatingStar3DToCylindrical2D) {
   long pid = static_cast<long>(::getpid());
   MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
@@ -116,6 +116,14 @@ TEST(HandOffRoundTrip, RotatingStar3DToCylindrical2D) {
     j[r] = b.angular_momentum;
     EXPECT_NEAR(b.report.imported.rest_mass / b.report.source_grid.rest_mass, 1.0, 1e-13);
   }
+  // The finer 3D data to 2D spherical (r, theta; equatorial mirror): the same M0 and J.
+  const RunResult sph = run("handoff_tov_cyl_2d.yaml",
+                            {"Flesh::out_dir=" + (dir / "2d_sph").string(), "HandOff::format=remnant", "HandOff::reflection=[z]",
+                             "HandOff::files=[" + (dir / "3d_1" / "grid-volume.it00000000.h5").string() + "]",
+                             "Grid::coordinates=spherical", "Grid::ncells=[64,32,1]",
+                             "Grid::xmax=[16,1.5707963267948966,6.283185307179586]",
+                             "Grid::boundary_lower=[origin,axis,outflow]", "Grid::boundary_upper=[outflow,reflect,outflow]"},
+                            true);
   MPI_Barrier(MPI_COMM_WORLD);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -130,4 +138,11 @@ TEST(HandOffRoundTrip, RotatingStar3DToCylindrical2D) {
   EXPECT_NEAR(m0[1] / m02d, 1.0, 5e-4);
   EXPECT_LT(std::abs(j[1] / j2d - 1), std::abs(j[0] / j2d - 1) / 2);
   EXPECT_NEAR(j[1] / j2d, 1.0, 1.5e-3);
+  std::printf("rotating round trip to 2D spherical: rho_c %.6e (%.2e), M0 %.8f (%.2e), J %.8f (%.2e)\n", sph.first.rho_c,
+              sph.first.rho_c / rho2d - 1, sph.report.after.rest_mass, sph.report.after.rest_mass / m02d - 1,
+              sph.report.after.angular_momentum, sph.report.after.angular_momentum / j2d - 1);
+  EXPECT_NEAR(sph.report.imported.rest_mass / sph.report.source_grid.rest_mass, 1.0, 1e-13);
+  EXPECT_NEAR(sph.first.rho_c / rho2d, 1.0, 2e-2);
+  EXPECT_NEAR(sph.report.after.rest_mass / m02d, 1.0, 5e-4);
+  EXPECT_NEAR(sph.report.after.angular_momentum / j2d, 1.0, 2e-3);
 }
