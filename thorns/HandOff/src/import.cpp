@@ -143,6 +143,7 @@ void initial(Context& ctx) {
   const Sampler sampler(src, fields);
   const auto phi_param = static_cast<int>(ctx.param<std::int64_t>("HandOff", "phi_samples"));
   const auto per_direction = static_cast<int>(ctx.param<std::int64_t>("HandOff", "cell_samples"));
+  const double ye_default = ctx.param<double>("HandOff", "ye");
   const double h = src.finest_spacing();
   auto& r = st.report;
   long long cells = 0, empty = 0, partial = 0;
@@ -179,7 +180,7 @@ void initial(Context& ctx) {
       prim.rho(i, j, k) = c.rho;
       for (int a = 0; a < 3; ++a) prim.vel(a, i, j, k) = c.vel[a];
       prim.eps(i, j, k) = c.eps;
-      prim.Ye(i, j, k) = c.cons[0] > 0 ? c.cons[5] / c.cons[0] : ctx.param<double>("HandOff", "ye");
+      prim.Ye(i, j, k) = c.cons[0] > 0 ? c.cons[5] / c.cons[0] : ye_default;
       prim.press(i, j, k) = 0.0, prim.temperature(i, j, k) = 0.0, prim.W(i, j, k) = 1.0, prim.cs2(i, j, k) = 0.0;
       metric.psi(i, j, k) = c.hits && c.gamma13 > 0 ? std::pow(c.gamma13, 0.25) : 1.0;
       metric.alpha(i, j, k) = c.hits && c.alp > 0 ? c.alp : 1.0;

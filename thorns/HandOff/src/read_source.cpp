@@ -25,9 +25,16 @@ void check_magnetic_field(const Context& ctx, SourceData& src, std::vector<std::
     std::string file = "the data";
     for (int c = 2; c >= 0; --c)
       if (src.file_of.count("Bvec[" + std::to_string(c) + "]")) file = src.file_of.at("Bvec[" + std::to_string(c) + "]");
+    // A face-centred group is a staggered magnetic field (constrained transport).
+    std::string evolved;
+    for (const auto& g : ctx.vars().groups())
+      if (g.centering == Centering::face_x || g.centering == Centering::face_y || g.centering == Centering::face_z)
+        evolved = g.full_name();
     throw RunError("HandOff: " + file + ": the data hold a magnetic field (HydroBase::Bvec, max |B| = " + std::to_string(bmax) +
-                   "), but HandOff does not import magnetic fields and this run evolves none; set "
-                   "HandOff::ignore_magnetic_field = true to hand off the fluid alone");
+                   "), but HandOff does not import magnetic fields yet" +
+                   (evolved.empty() ? std::string(" and this run evolves none")
+                                    : " (this run evolves one, " + evolved + ", which would start from zero)") +
+                   "; set HandOff::ignore_magnetic_field = true to hand off the fluid alone");
   }
   if (bmax > 0) notes.push_back("the data's magnetic field (max |B| = " + std::to_string(bmax) + ") is dropped (HandOff::ignore_magnetic_field)");
   for (auto& L : src.levels)
