@@ -199,6 +199,13 @@ TEST(HandOffTOV, CarpetToSpherical2D) {
   check(data, r, "3D Carpet -> 2D spherical (equatorial mirror)", 2e-2, 2e-3, 2e-3);
 }
 
+TEST(HandOffTOV, CarpetToCylindrical3D) {
+  const TovCarpet data(kAll);
+  const Result r = hand_off(data, {"Grid::dimension=3", "Grid::ncells=[24,24,8]", "Grid::block_size=[12,12,4]",
+                                   "Grid::boundary_lower=[axis,reflect,periodic]", "Grid::boundary_upper=[outflow,outflow,periodic]"});
+  check(data, r, "3D Carpet -> 3D cylindrical (R, z, phi)", 2e-2, 2e-3, 2e-3);
+}
+
 TEST(HandOffTOV, CarpetToCartesian3DOctant) {
   const TovCarpet data(kAll);
   const Result r = hand_off(data, {"Grid::coordinates=cartesian", "Grid::dimension=3", "Grid::ncells=[24,24,24]",
