@@ -27,14 +27,14 @@ class RadialModes {
   RadialModes(double K, double Gamma, double rho_c, bool full_gr = false, int steps = 4000)
       : K_(K), G_(Gamma), full_gr_(full_gr), steps_(steps) {
     p_c_ = K * std::pow(rho_c, Gamma);
-    // First pass: the radius, mass and the offset of Phi.
-    State s = integrate(0.0, false);
+    // The background alone: the radius, the mass and the offset of Phi.
+    const State s = integrate(0.0, false, 1e-3, &r_surface_);
     phi0_ = 0.5 * std::log(1 - 2 * s.m / r_surface_) - s.phi;
   }
   double radius() const { return r_surface_; }
 
   // Surface value of P at angular frequency omega (code units).
-  double surface_P(double omega) const { return integrate(omega, true).P; }
+  double surface_P(double omega) const { return integrate(omega, true, r_surface_ / steps_).P; }
 
   // The n-th (0 = F) eigenfrequency in kHz with the time unit t_unit_ms (G M_sun / c^3 in ms):
   // scans omega for sign changes of P(R) and bisects.
@@ -91,9 +91,9 @@ class RadialModes {
     return d;
   }
 
-  // RK4 from the centre to the surface (where p would turn negative); the last full step's state.
-  State integrate(double omega, bool perturb) const {
-    const double h = first_pass_ ? 1e-3 : r_surface_ / steps_;
+  // RK4 with step h from the centre to the surface (where p would turn negative): the state and
+  // (r_end) the radius of the last full step.
+  State integrate(double omega, bool perturb, double h, double* r_end = nullptr) const {
     double r = 1e-6;
     State y;
     y.p = p_c_;
@@ -115,29 +115,19 @@ class RadialModes {
       const State y4 = add(y, k3, h);
       if (y4.p <= 0) break;
       const State k4 = rhs(r + h, y4, omega, perturb);
-      State n;
-      n.m = y.m + h / 6 * (k1.m + 2 * k2.m + 2 * k3.m + k4.m);
-      n.p = y.p + h / 6 * (k1.p + 2 * k2.p + 2 * k3.p + k4.p);
-      n.phi = y.phi + h / 6 * (k1.phi + 2 * k2.phi + 2 * k3.phi + k4.phi);
-      n.xi = y.xi + h / 6 * (k1.xi + 2 * k2.xi + 2 * k3.xi + k4.xi);
-      n.P = y.P + h / 6 * (k1.P + 2 * k2.P + 2 * k3.P + k4.P);
+      const State n = add(add(add(add(y, k1, h / 6), k2, h / 3), k3, h / 3), k4, h / 6);
       if (n.p <= 0) break;
       y = n;
       r += h;
     }
-    if (first_pass_) {
-      r_surface_ = r;
-      first_pass_ = false;
-    }
+    if (r_end) *r_end = r;
     return y;
   }
 
   double K_, G_;
   bool full_gr_;
-  double p_c_ = 0, phi0_ = 0;
   int steps_;
-  mutable double r_surface_ = 0;
-  mutable bool first_pass_ = true;
+  double p_c_ = 0, phi0_ = 0, r_surface_ = 0;
 };
 
 }  // namespace remnant::tov_test

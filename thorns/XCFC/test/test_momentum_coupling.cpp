@@ -39,21 +39,22 @@ struct Fields {
 };
 
 Fields fields(const ChainCase& c) {
-  const double s = c.spherical ? 1.0 : 0.0;  // anisotropy switched off for spherical symmetry
-  const double tor = c.toroidal ? 1.0 : 0.0;
+  // Gaussian widths (varpi, z): equal where the grid needs spherical symmetry.
+  const double zx = c.spherical ? 0.5 : 0.6, zb = c.spherical ? 0.35 : 0.45, zp = c.spherical ? 0.4 : 0.5,
+               za = c.spherical ? 0.3 : 0.35;
+  const double ax = c.spherical ? 0.4 : 0.3, ab = c.spherical ? -0.2 : 0.25;  // z amplitudes (poloidal)
+  const double tx = c.toroidal ? 0.3 : 0.0, tb = c.toroidal ? 0.25 : 0.0;     // toroidal amplitudes
   Fields f;
   f.X = [=](const Point3& X) {
-    const double gp = 0.4 * gauss(X, 0.5, 0.5 + 0.1 * (1 - s)), gz = (0.3 + 0.1 * s) * gauss(X, 0.5, 0.5 + 0.1 * (1 - s));
-    const double gt = 0.3 * tor * gauss(X, 0.4, 0.5);
+    const double gp = 0.4 * gauss(X, 0.5, zx), gz = ax * gauss(X, 0.5, zx), gt = tx * gauss(X, 0.4, 0.5);
     return Point3{X[0] * gp - X[1] * gt, X[1] * gp + X[0] * gt, X[2] * gz};
   };
   f.beta = [=](const Point3& X) {
-    const double hp = -0.2 * gauss(X, 0.35, 0.35 + 0.1 * (1 - s)), hz = (-0.2 + 0.45 * (1 - s)) * gauss(X, 0.35, 0.35 + 0.1 * (1 - s));
-    const double ht = 0.25 * tor * gauss(X, 0.3, 0.4);
+    const double hp = -0.2 * gauss(X, 0.35, zb), hz = ab * gauss(X, 0.35, zb), ht = tb * gauss(X, 0.3, 0.4);
     return Point3{X[0] * hp - X[1] * ht, X[1] * hp + X[0] * ht, X[2] * hz};
   };
-  f.psi = [=](const Point3& X) { return 1 + 0.3 * gauss(X, 0.4, 0.4 + 0.1 * (1 - s)); };
-  f.alpha_psi = [=](const Point3& X) { return 1 - 0.25 * gauss(X, 0.3, 0.3 + 0.05 * (1 - s)); };
+  f.psi = [=](const Point3& X) { return 1 + 0.3 * gauss(X, 0.4, zp); };
+  f.alpha_psi = [=](const Point3& X) { return 1 - 0.25 * gauss(X, 0.3, za); };
   return f;
 }
 
