@@ -10,6 +10,7 @@
 #include "mass_budget.hpp"
 #include "mhd_fluxes.hpp"
 #include "rhs.hpp"
+#include "alfven_wave.hpp"
 #include "shock_tube.hpp"
 #include "shock_tube_field.hpp"
 #include "time_step.hpp"
@@ -107,7 +108,12 @@ REMNANT_REGISTER_THORN(GRMHD) {
   using namespace remnant::grmhd;
   reg.function("GRMHD_CheckParameters", check_parameters);
   reg.function("GRMHD_ShockTube", shock_tube_initial_data);
-  reg.function("GRMHD_ShockTubeField", shock_tube_field);
+  reg.function("GRMHD_AlfvenWave", alfven_wave_initial_data);
+  reg.function("GRMHD_InitialField", [](remnant::Context& ctx) {
+    const std::string& id = ctx.param<std::string>("GRMHD", "initial_data");
+    if (id == "shock_tube") shock_tube_field(ctx);
+    if (id == "alfven_wave") alfven_wave_field(ctx);
+  });
   reg.function("GRMHD_RHS", calc_rhs);
   reg.function("GRMHD_RHS_MHD", calc_rhs_mhd);
   reg.function("GRMHD_CellCentredField", cell_centred_field);

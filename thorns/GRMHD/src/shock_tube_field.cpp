@@ -68,7 +68,6 @@ void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& 
 }
 
 void shock_tube_field(Context& ctx) {
-  if (ctx.param<std::string>("GRMHD", "initial_data") != "shock_tube") return;
   const auto& left = ctx.param<std::vector<double>>("GRMHD", "shock_field_left");
   const auto& right = ctx.param<std::vector<double>>("GRMHD", "shock_field_right");
   if (left[0] != right[0])

@@ -25,7 +25,7 @@ CovariantPotential test_potential(CoordinateSystem cs, double amplitude);
 // Adds to Bface1..3 (groups bface) of the interior faces the face fluxes / area of potential A.
 void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& bface, Block& b);
 
-// GRMHD_ShockTubeField: the uniform left/right fields plus the potential's.
+// The shock tube's face fields (GRMHD_InitialField): the uniform left/right fields plus the potential's.
 void shock_tube_field(Context& ctx);
 
 }  // namespace remnant::grmhd
