@@ -65,3 +65,20 @@ TEST(MHDAtmosphere, TooStrongInitialFieldIsRefused) {
     EXPECT_NE(m.find("b^2/rho = 1600"), std::string::npos) << m;
   }
 }
+
+// A magnetic-field parameter without a field is refused before the first step, naming it.
+TEST(MHDParameters, FieldParameterWithoutFieldIsAnError) {
+  std::string par = mhd_parfile(kGrid,
+                                "reconstruction: mc, initial_data: shock_tube, "
+                                "shock_field_left: [0.0, 1.0, 0.0], shock_field_right: [0.0, 1.0, 0.0]",
+                                "cfl: 0.4, max_iterations: 1");
+  par.replace(par.find("magnetic_field: evolved"), 23, "magnetic_field: none");
+  try {
+    MhdRun run(par);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("GRMHD::shock_field_left is a magnetic-field parameter"), std::string::npos) << m;
+    EXPECT_NE(m.find("run.yaml:"), std::string::npos) << m;
+  }
+}
