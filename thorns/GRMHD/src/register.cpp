@@ -135,6 +135,7 @@ REMNANT_REGISTER_THORN(GRMHD) {
   reg.function("GRMHD_RHS", calc_rhs);
   reg.function("GRMHD_RHS_MHD", calc_rhs_mhd);
   reg.function("GRMHD_CellCentredField", cell_centred_field);
+  reg.function("GRMHD_CellCentredFieldAfterRegrid", cell_centred_field);
   reg.function("GRMHD_Con2Prim", con2prim);
   reg.inverse_dt_limit(inverse_dt);
 }
