@@ -72,6 +72,33 @@ void gauss_legendre(int n, std::vector<double>& nodes, std::vector<double>& weig
   }
 }
 
+CovariantPotential covariant_from_phi_component(CoordinateSystem c, std::function<double(const Point3& x)> a_phi) {
+  if (c == CoordinateSystem::cartesian)
+    return [f = std::move(a_phi)](const Point3& x) -> std::array<double, 3> {
+      const double w2 = x[0] * x[0] + x[1] * x[1];
+      if (w2 == 0.0) return {0.0, 0.0, 0.0};
+      const double a = f(x) / w2;
+      return {-x[1] * a, x[0] * a, 0.0};
+    };
+  return [f = std::move(a_phi)](const Point3& x) -> std::array<double, 3> { return {0.0, 0.0, f(x)}; };
+}
+
+Point3 cell_centred_densitised_field(const Block& b, const std::array<Field, 3>& faces, int i, int j, int k) {
+  Point3 B{};
+  for (int d = 0; d < 3; ++d) {
+    const Field& F = faces[static_cast<std::size_t>(d)];
+    if (!direction_used(b, d)) {
+      B[static_cast<std::size_t>(d)] = F(i, j, k);
+      continue;
+    }
+    const int ip = i + (d == 0), jp = j + (d == 1), kp = k + (d == 2);
+    const double a_lo = b.face_area(d, i, j, k), a_hi = b.face_area(d, ip, jp, kp);
+    const double sum = a_lo + a_hi;
+    B[static_cast<std::size_t>(d)] = sum > 0.0 ? (a_lo * F(i, j, k) + a_hi * F(ip, jp, kp)) / sum : 0.5 * (F(i, j, k) + F(ip, jp, kp));
+  }
+  return B;
+}
+
 CovariantPotential covariant_from_axisymmetric(CoordinateSystem c, AxisymmetricPotential a_phi) {
   switch (c) {
     case CoordinateSystem::cartesian:

@@ -185,7 +185,21 @@ TEST(VectorPotential, UniformFieldFromAxisymmetricPotentialIsExactInCartesianAnd
           const double expected = d == z ? B0 : 0.0;
           if (t.block->face_area(d, i, j, k) > 0) EXPECT_NEAR(F[static_cast<std::size_t>(d)](i, j, k), expected, 1e-13);
         }
+        // Cell centres (area-weighted face means) too, axis cells included.
+        const Point3 Bc = cell_centred_densitised_field(*t.block, F, i, j, k);
+        for (int d = 0; d < 3; ++d) EXPECT_NEAR(Bc[static_cast<std::size_t>(d)], d == z ? B0 : 0.0, 1e-13);
       });
+      // A_phi given as a function of the block point: the same faces.
+      TestBlock u(c, dim, 8, dom.xmin, dom.xmax);
+      set_faces_from_potential(*u.block, covariant_from_phi_component(c, [B0, c](const Point3& x) {
+        const Point3 X = coords::to_cartesian(c, x);
+        const double w = c == CoordinateSystem::cylindrical ? x[0] : std::hypot(X[0], X[1]);
+        return 0.5 * B0 * w * w;
+      }), u.faces());
+      for (int d = 0; d < dim; ++d)
+        for_interior(*t.block, [&](int i, int j, int k) {
+          EXPECT_NEAR(u.faces()[static_cast<std::size_t>(d)](i, j, k), F[static_cast<std::size_t>(d)](i, j, k), 1e-14);
+        });
     }
 }
 

@@ -40,6 +40,9 @@ using AxisymmetricPotential = std::function<double(double varpi, double z)>;
 // A_phi(varpi, z) as covariant components in coordinates c (Cartesian: A_x = -y A_phi / varpi^2,
 // A_y = x A_phi / varpi^2, 0 on the axis).
 CovariantPotential covariant_from_axisymmetric(CoordinateSystem c, AxisymmetricPotential a_phi);
+// The same for A_phi given as a function of the point in the block's coordinates (e.g. a law of
+// the local pressure interpolated from the grid).
+CovariantPotential covariant_from_phi_component(CoordinateSystem c, std::function<double(const Point3& x)> a_phi);
 
 // Line integrals of A along the interior edges of one block. Edges along a are indexed by the cell
 // in direction a and the face (0..n, or 0 where unused) in the other two.
@@ -72,6 +75,10 @@ inline void set_faces_from_potential(const Block& b, const CovariantPotential& A
 // only), and optionally sum |area * value| / V, the scale against which it is round-off.
 double cell_divergence(const Block& b, const std::array<Field, 3>& faces, int i, int j, int k,
                        double* magnitude = nullptr);
+
+// psi^6 B^i at the centre of cell (i, j, k): per direction the area-weighted mean of the cell's two
+// faces (the one stored face of an unused direction); divide by psi^6 for B^i.
+Point3 cell_centred_densitised_field(const Block& b, const std::array<Field, 3>& faces, int i, int j, int k);
 
 // Gauss-Legendre nodes on [-1, 1] and weights, n = 1..16.
 void gauss_legendre(int n, std::vector<double>& nodes, std::vector<double>& weights);
