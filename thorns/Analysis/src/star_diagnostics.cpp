@@ -73,17 +73,24 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   return d;
 }
 
-const char* tsv_header() {
-  return "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
-         "atmosphere_source\tmass_budget\n";
+std::string tsv_header(bool magnetic) {
+  std::string h = "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
+                  "atmosphere_source\tmass_budget";
+  if (magnetic) h += "\tdivB_max\tE_mag\tE_mag_pol\tE_mag_tor\tB_max";
+  return h + "\n";
 }
 
 std::string tsv_line(const StarDiagnostics& d) {
-  char b[768];
-  std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
-                static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
-                d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
-  return b;
+  char b[1024];
+  int n = std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g",
+                        static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
+                        d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
+  if (d.magnetic) {
+    const MagneticDiagnostics& m = *d.magnetic;
+    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", m.divB_max, m.E_mag,
+                       m.E_mag_pol, m.E_mag_tor, m.B_max_gauss);
+  }
+  return std::string(b) + "\n";
 }
 
 }  // namespace remnant::analysis

@@ -5,6 +5,9 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "Analysis/magnetic_diagnostics.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::analysis {
@@ -17,6 +20,8 @@ struct StarDiagnostics {
   // added by the atmosphere and the error policy so far, and rest_mass + outflow - source, which
   // the scheme keeps constant to round-off.
   double outflow = 0, atmosphere_source = 0, mass_budget = 0;
+  // Runs with evolved B only (the extra columns).
+  std::optional<MagneticDiagnostics> magnetic;
 };
 
 struct History {
@@ -25,7 +30,8 @@ struct History {
 
 // Collective over the grid's ranks; every rank gets the same values.
 StarDiagnostics star_diagnostics(Context& ctx);
-const char* tsv_header();
+// The columns of a hydro run, plus divB_max, E_mag, E_mag_pol, E_mag_tor, B_max with magnetic = true.
+std::string tsv_header(bool magnetic = false);
 std::string tsv_line(const StarDiagnostics& d);
 
 }  // namespace remnant::analysis
