@@ -19,11 +19,8 @@ namespace {
 
 // |psi^6 B| in the flat metric at a cell (the neighbourhood scale of divB_max).
 double densitised_magnitude(const Block& b, const std::array<Field, 3>& faces, int i, int j, int k) {
-  const Point3 f = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k));
-  const Point3 B = hydrobase::cell_centred_densitised_field(b, faces, i, j, k);
-  double s = 0;
-  for (int d = 0; d < 3; ++d) s += f[static_cast<std::size_t>(d)] * B[static_cast<std::size_t>(d)] * B[static_cast<std::size_t>(d)];
-  return std::sqrt(s);
+  const Point3 v = hydrobase::cell_orthonormal_densitised_field(b, faces, i, j, k);
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
 }  // namespace
@@ -49,23 +46,21 @@ MagneticBlockMaxima magnetic_block_pass(const Block& b, const std::array<Field, 
     }
     const double div = hydrobase::cell_divergence(b, faces, i, j, k);
     if (nb > 0 && std::isfinite(h)) s.div_scaled = std::max(s.div_scaled, std::abs(div) * h / nb);
-    // Energies with the CFC measure psi^6 sqrt(f) d^3x = psi^6 * cell volume.
-    const double psi2 = psi(i, j, k) * psi(i, j, k), psi4 = psi2 * psi2, psi6 = psi4 * psi2;
-    const Point3 Bd = hydrobase::cell_centred_densitised_field(b, faces, i, j, k);
-    Point3 B{};
-    for (int d = 0; d < 3; ++d) B[static_cast<std::size_t>(d)] = Bd[static_cast<std::size_t>(d)] / psi6;
-    double B2 = 0;
-    for (int d = 0; d < 3; ++d) B2 += psi4 * f[static_cast<std::size_t>(d)] * B[static_cast<std::size_t>(d)] * B[static_cast<std::size_t>(d)];
+    // Energies with the CFC measure psi^6 sqrt(f) d^3x; B^2 = gamma_ij B^i B^j = |v|^2 / psi^8 with v
+    // the orthonormal components of psi^6 B in the flat metric.
+    const double psi2 = psi(i, j, k) * psi(i, j, k), psi4 = psi2 * psi2, psi6 = psi4 * psi2, psi8 = psi4 * psi4;
+    const Point3 v = hydrobase::cell_orthonormal_densitised_field(b, faces, i, j, k);
+    const double B2 = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) / psi8;
     double Btor2 = 0;
     if (c == CoordinateSystem::cartesian) {
       // Cylindrical split: B_phi-hat = (-y B^x + x B^y) / varpi.
       const double w2 = x[0] * x[0] + x[1] * x[1];
       if (w2 > 0) {
-        const double bphi = -x[1] * B[0] + x[0] * B[1];
-        Btor2 = psi4 * bphi * bphi / w2;
+        const double bphi = -x[1] * v[0] + x[0] * v[1];
+        Btor2 = bphi * bphi / w2 / psi8;
       }
     } else {
-      Btor2 = psi4 * f[2] * B[2] * B[2];
+      Btor2 = v[2] * v[2] / psi8;
     }
     densities[0](i, j, k) = 0.5 * psi6 * B2;
     densities[1](i, j, k) = 0.5 * psi6 * std::max(B2 - Btor2, 0.0);

@@ -99,6 +99,44 @@ Point3 cell_centred_densitised_field(const Block& b, const std::array<Field, 3>&
   return B;
 }
 
+double face_orthonormal_area(const Block& b, int d, int i, int j, int k) {
+  const int idx[3] = {i, j, k};
+  // Coordinate length of the face along e (the unit/full-range conventions of unused directions).
+  auto length = [&](int e) {
+    const auto ue = static_cast<std::size_t>(e);
+    if (direction_used(b, e)) return b.face_coordinate(e, idx[e] + 1) - b.face_coordinate(e, idx[e]);
+    return coords::is_angle(b.coordinates, e) ? b.dx[ue] : 1.0;
+  };
+  auto half_square_difference = [&](int e) {  // integral of x dx over the cell along e
+    const double lo = b.face_coordinate(e, idx[e]), hi = b.face_coordinate(e, idx[e] + 1);
+    return 0.5 * (hi - lo) * (hi + lo);
+  };
+  if (b.coordinates == CoordinateSystem::spherical && d == 1)  // sqrt(f / f_thth) = r sin(theta)
+    return half_square_difference(0) * b.face_factor(1, j) * length(2);
+  if (b.coordinates == CoordinateSystem::spherical && d == 2)  // r
+    return half_square_difference(0) * length(1);
+  if (b.coordinates == CoordinateSystem::cylindrical && d == 2)  // 1
+    return length(0) * length(1);
+  return b.face_area(d, i, j, k);  // f_dd = 1
+}
+
+Point3 cell_orthonormal_densitised_field(const Block& b, const std::array<Field, 3>& faces, int i, int j, int k) {
+  Point3 B{};
+  for (int d = 0; d < 3; ++d) {
+    const Field& F = faces[static_cast<std::size_t>(d)];
+    const bool used = direction_used(b, d);
+    const int ip = i + (d == 0 && used), jp = j + (d == 1 && used), kp = k + (d == 2 && used);
+    double sum = 0.0;
+    int count = 0;
+    for (const auto& p : {std::array<int, 3>{i, j, k}, std::array<int, 3>{ip, jp, kp}}) {
+      const double phys = face_orthonormal_area(b, d, p[0], p[1], p[2]);
+      if (phys > 0.0) sum += F(p[0], p[1], p[2]) * b.face_area(d, p[0], p[1], p[2]) / phys, ++count;
+    }
+    B[static_cast<std::size_t>(d)] = count > 0 ? sum / count : 0.0;
+  }
+  return B;
+}
+
 CovariantPotential covariant_from_axisymmetric(CoordinateSystem c, AxisymmetricPotential a_phi) {
   switch (c) {
     case CoordinateSystem::cartesian:

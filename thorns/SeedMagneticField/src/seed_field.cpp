@@ -42,13 +42,9 @@ void add_toroidal_phi_faces(const Block& b, const ToroidalLaw& law, const StarFi
 }
 
 double field_strength(const Block& b, const std::array<Field, 3>& faces, Field psi, int i, int j, int k) {
-  const Point3 x = cell_point(b, i, j, k);
-  const Point3 f = coords::metric_diagonal(b.coordinates, x);
-  const Point3 B = hydrobase::cell_centred_densitised_field(b, faces, i, j, k);
-  const double psi2 = psi(i, j, k) * psi(i, j, k), psi6 = psi2 * psi2 * psi2;
-  double b2 = 0.0;
-  for (int d = 0; d < 3; ++d) b2 += f[static_cast<std::size_t>(d)] * B[static_cast<std::size_t>(d)] * B[static_cast<std::size_t>(d)];
-  return psi2 * std::sqrt(b2) / psi6;
+  const Point3 v = hydrobase::cell_orthonormal_densitised_field(b, faces, i, j, k);
+  const double psi2 = psi(i, j, k) * psi(i, j, k);
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) / (psi2 * psi2);
 }
 
 }  // namespace remnant::seed

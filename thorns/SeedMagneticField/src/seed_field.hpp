@@ -25,7 +25,8 @@ void add_toroidal_phi_faces(const Block& b, const ToroidalLaw& law, const StarFi
 // psi^6 B^phi of the toroidal law at interior cell (i, j, k) (any coordinates).
 double toroidal_densitised_bphi(const Block& b, const ToroidalLaw& law, const StarFields& in, int i, int j, int k);
 
-// sqrt(gamma_ij B^i B^j) at an interior cell: B^i the cell-centred faces / psi^6, gamma = psi^4 f.
+// sqrt(gamma_ij B^i B^j) at an interior cell (gamma = psi^4 f) from the orthonormal cell field of
+// the faces (HydroBase/vector_potential.hpp), accurate next to the origin and the axis.
 double field_strength(const Block& b, const std::array<Field, 3>& faces, Field psi, int i, int j, int k);
 
 }  // namespace remnant::seed
