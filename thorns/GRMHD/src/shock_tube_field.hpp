@@ -22,8 +22,9 @@ using CovariantPotential = std::function<std::array<double, 3>(const Point3&)>;
 // The test potential above for a coordinate system.
 CovariantPotential test_potential(CoordinateSystem cs, double amplitude);
 
-// Adds to Bface1..3 (groups bface) of the interior faces the face fluxes / area of potential A.
-void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& bface, Block& b);
+// Adds to Bface1..3 (groups bface) of the interior faces the face fluxes / area of potential A; with
+// ghost_layers > 0 also to that many layers of ghost faces in the used directions.
+void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& bface, Block& b, int ghost_layers = 0);
 
 // The shock tube's face fields (GRMHD_InitialField): the uniform left/right fields plus the potential's.
 void shock_tube_field(Context& ctx);
