@@ -175,7 +175,8 @@ void initial(Context& ctx) {
   if (p.find(kMagnetisationCapThorn, kMagnetisationCapName)) {
     const double cap = ctx.param<double>(kMagnetisationCapThorn, kMagnetisationCapName);
     if (sigma > cap)
-      throw InputError(user_origin(p, {{"SeedMagneticField", poloidal ? "B_max_gauss" : "K_m"}, {"SeedMagneticField", "K_m"}}),
+      throw InputError(user_origin(p, {{"SeedMagneticField", poloidal ? "B_max_gauss" : "K_m"},
+                                       {kMagnetisationCapThorn, kMagnetisationCapName}}),
                        std::string("SeedMagneticField: the seeded field reaches b^2/rho = ") + format_number(sigma) +
                            " in the star, above the atmosphere's cap " + kMagnetisationCapThorn + "::" + kMagnetisationCapName +
                            " = " + format_number(cap) + "; lower SeedMagneticField::" + (poloidal ? "B_max_gauss" : "K_m") +

@@ -115,6 +115,11 @@ TEST(SeededStar, BadInputStopsBeforeTheFirstStep) {
                      {"HydroBase::magnetic_field = none", "SeedMagneticField", "evolved"});
   expect_input_error(kCylindrical, {"SeedMagneticField::p_cut_fraction=1.2"},
                      {"SeedMagneticField::p_cut_fraction = 1.2", "p_max", "[0, 1)", "command line"});
+  // BU0 with 1e18 G: b^2/rho reaches ~1e-1 in the star's outer layers; a cap of 1e-3 refuses it.
+  expect_input_error(kCylindrical, {"SeedMagneticField::B_max_gauss=1e18", "Atmosphere::sigma_max=1e-3"},
+                     {"b^2/rho", "Atmosphere::sigma_max = 0.001", "SeedMagneticField::B_max_gauss"});
+  expect_input_error(kCylindrical, {"SeedMagneticField::type=toroidal", "Atmosphere::sigma_max=1e-3"},
+                     {"b^2/rho", "Atmosphere::sigma_max", "SeedMagneticField::K_m"});
   expect_input_error(kCylindrical, {"Grid::dimension=1", "Grid::ncells=[32,1,1]", "Grid::block_size=[16,1,1]"},
                      {"Grid::dimension = 1", "axis"});
 }
