@@ -1,6 +1,7 @@
 #include "check_parameters.hpp"
 
 #include <cstdio>
+#include <vector>
 
 namespace remnant::seed {
 
@@ -23,6 +24,36 @@ SourceLocation user_origin(const Parameters& p, std::initializer_list<std::pair<
   return p.origin(thorn, name);
 }
 
+namespace {
+
+// The Grid's reflect boundaries keep B even (a pseudo-vector's mirror image). A poloidal star field
+// is odd under mirrors through planes that contain its axis (x = 0, y = 0), a toroidal one under
+// the equatorial mirror: such a boundary would evolve another field than the one seeded.
+void check_symmetry(Context& ctx, const std::string& type, const std::string& coords, std::int64_t dim) {
+  const Parameters& p = ctx.params();
+  const auto& lower = ctx.param<std::vector<std::string>>("Grid", "boundary_lower");
+  const auto& upper = ctx.param<std::vector<std::string>>("Grid", "boundary_upper");
+  const bool poloidal = type != "toroidal", toroidal = type != "poloidal";
+  if (poloidal && coords == "cartesian" && dim == 3 && (lower[0] == "reflect" || lower[1] == "reflect"))
+    throw InputError(user_origin(p, {{"Grid", "boundary_lower"}, {"SeedMagneticField", "type"}}),
+                     "SeedMagneticField::type = " + type + " with Grid::boundary_lower = [" + lower[0] + ", " + lower[1] +
+                         ", " + lower[2] + "]: a poloidal field is odd under the mirrors x = 0 and y = 0 (planes containing "
+                         "the star's axis) while reflect boundaries keep B even; allowed: reflect at z = 0 only (cover x and "
+                         "y on both sides of the axis)");
+  bool equator = false;
+  const char* which = "boundary_lower";
+  if (coords == "cartesian" && dim == 3) equator = lower[2] == "reflect";
+  if (coords == "cylindrical") equator = lower[1] == "reflect";
+  if (coords == "spherical") equator = upper[1] == "reflect", which = "boundary_upper";
+  if (toroidal && equator)
+    throw InputError(user_origin(p, {{"Grid", which}, {"SeedMagneticField", "type"}}),
+                     "SeedMagneticField::type = " + type + " with an equatorial reflect boundary (Grid::" + which +
+                         "): a toroidal field is odd under the equatorial mirror while reflect boundaries keep B even; "
+                         "allowed: the whole star across the equator (e.g. theta up to pi with an axis boundary)");
+}
+
+}  // namespace
+
 void check_parameters(Context& ctx) {
   const Parameters& p = ctx.params();
   const std::string mode = p.find("HydroBase", "magnetic_field") ? ctx.param<std::string>("HydroBase", "magnetic_field") : "none";
@@ -42,6 +73,7 @@ void check_parameters(Context& ctx) {
   if (p.find("Grid", "coordinates")) {
     const std::string coords = ctx.param<std::string>("Grid", "coordinates");
     const auto dim = ctx.param<std::int64_t>("Grid", "dimension");
+    check_symmetry(ctx, type, coords, dim);
     const bool axisymmetric_2d = dim == 2 && coords != "cartesian";
     if (dim != 3 && !axisymmetric_2d)
       throw InputError(user_origin(p, {{"Grid", "dimension"}, {"Grid", "coordinates"}, {"SeedMagneticField", "type"}}),
