@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 #include "remnant/coordinates.hpp"
@@ -70,12 +71,17 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   d.outflow = outflow;
   d.atmosphere_source = source;
   d.mass_budget = mass_g + outflow - source;
+  if (ctx.param<bool>("Analysis", "rotation")) {  // computed by Analysis_Rotation just before
+    d.has_rotation = true;
+    d.rotation = ctx.service<RotationDiagnostics>("Analysis::rotation_now");
+  }
   return d;
 }
 
-std::string tsv_header(bool magnetic) {
+std::string tsv_header(bool rotation, bool magnetic) {
   std::string h = "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
                   "atmosphere_source\tmass_budget";
+  if (rotation) h += "\tJ\tT_over_W\tOmega_c\tM_komar\tmode_m1\tmode_m2";
   if (magnetic) h += "\tdivB_max\tE_mag\tE_mag_pol\tE_mag_tor\tB_max";
   return h + "\n";
 }
@@ -85,6 +91,11 @@ std::string tsv_line(const StarDiagnostics& d) {
   int n = std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g",
                         static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
                         d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
+  if (d.has_rotation) {
+    const RotationDiagnostics& r = d.rotation;
+    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", r.J,
+                       r.T_over_W, r.omega_c, r.M_komar, r.mode_m1, r.mode_m2);
+  }
   if (d.magnetic) {
     const MagneticDiagnostics& m = *d.magnetic;
     n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", m.divB_max, m.E_mag,

@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "Analysis/magnetic_diagnostics.hpp"
+#include "Analysis/rotation_diagnostics.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::analysis {
@@ -20,6 +21,8 @@ struct StarDiagnostics {
   // added by the atmosphere and the error policy so far, and rest_mass + outflow - source, which
   // the scheme keeps constant to round-off.
   double outflow = 0, atmosphere_source = 0, mass_budget = 0;
+  bool has_rotation = false;  // Analysis::rotation: the columns of `rotation` follow mass_budget
+  RotationDiagnostics rotation;
   // Runs with evolved B only (the extra columns).
   std::optional<MagneticDiagnostics> magnetic;
 };
@@ -30,8 +33,9 @@ struct History {
 
 // Collective over the grid's ranks; every rank gets the same values.
 StarDiagnostics star_diagnostics(Context& ctx);
-// The columns of a hydro run, plus divB_max, E_mag, E_mag_pol, E_mag_tor, B_max with magnetic = true.
-std::string tsv_header(bool magnetic = false);
+// The columns of every run, then those of Analysis::rotation (J ... mode_m2), then with evolved B
+// divB_max, E_mag, E_mag_pol, E_mag_tor, B_max.
+std::string tsv_header(bool rotation, bool magnetic = false);
 std::string tsv_line(const StarDiagnostics& d);
 
 }  // namespace remnant::analysis
