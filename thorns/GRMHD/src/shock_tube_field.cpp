@@ -20,7 +20,7 @@ CovariantPotential test_potential(CoordinateSystem cs, double a0) {
     case CoordinateSystem::cylindrical:
       return [a0](const Point3& x) {
         const double R2 = x[0] * x[0];
-        return std::array<double, 3>{0.0, a0 * R2 * std::sin(x[2]), a0 * R2 * std::cos(k * x[1])};
+        return std::array<double, 3>{0.0, a0 * x[0] * std::sin(x[2]), a0 * R2 * std::cos(k * x[1])};
       };
     case CoordinateSystem::spherical:
       return [a0](const Point3& x) {

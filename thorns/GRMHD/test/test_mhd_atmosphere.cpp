@@ -51,17 +51,34 @@ TEST(MHDAtmosphere, MagnetisationOfAtmosphereCellsIsCapped) {
 }
 
 TEST(MHDAtmosphere, TooStrongInitialFieldIsRefused) {
-  // b^2/rho = 400 in the dense slab, above the default cap of 100.
+  // b^2/rho = 1600 in the dense slab, above the default cap of 1000.
   try {
     MhdRun run(mhd_parfile(kGrid,
                            "reconstruction: mc, initial_data: shock_tube, shock_position: 0.5, "
                            "shock_left: [1.0, 0.0, 0.0, 0.0, 0.1], shock_right: [1.0, 0.0, 0.0, 0.0, 0.1], "
-                           "shock_field_left: [0.0, 20.0, 0.0], shock_field_right: [0.0, 20.0, 0.0]",
+                           "shock_field_left: [0.0, 40.0, 0.0], shock_field_right: [0.0, 40.0, 0.0]",
                            "cfl: 0.4, max_iterations: 1"));
     FAIL() << "no error";
   } catch (const InputError& e) {
     const std::string m = e.what();
     EXPECT_NE(m.find("Atmosphere::sigma_max"), std::string::npos) << m;
-    EXPECT_NE(m.find("b^2/rho = 400"), std::string::npos) << m;
+    EXPECT_NE(m.find("b^2/rho = 1600"), std::string::npos) << m;
+  }
+}
+
+// A magnetic-field parameter without a field is refused before the first step, naming it.
+TEST(MHDParameters, FieldParameterWithoutFieldIsAnError) {
+  std::string par = mhd_parfile(kGrid,
+                                "reconstruction: mc, initial_data: shock_tube, "
+                                "shock_field_left: [0.0, 1.0, 0.0], shock_field_right: [0.0, 1.0, 0.0]",
+                                "cfl: 0.4, max_iterations: 1");
+  par.replace(par.find("magnetic_field: evolved"), 23, "magnetic_field: none");
+  try {
+    MhdRun run(par);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("GRMHD::shock_field_left is a magnetic-field parameter"), std::string::npos) << m;
+    EXPECT_NE(m.find("run.yaml:"), std::string::npos) << m;
   }
 }

@@ -34,6 +34,14 @@ void initial_cons(Context& ctx) {
   }
 }
 
+// Bvec = Bface / psi^6 with the current psi: the metric solver changes psi under the densitised face
+// fields, so its hooks refresh the cell-centred field before using it (no-op without a field).
+void refresh_field(Context& ctx) {
+  const FieldGroups g = FieldGroups::of(ctx);
+  if (g.bvec < 0) return;
+  for (Block* b : ctx.grid().local_blocks()) cell_centred_field(g, *b);
+}
+
 }  // namespace
 }  // namespace remnant::hydrobase
 
@@ -49,14 +57,17 @@ REMNANT_REGISTER_THORN(HydroBase) {
   reg.function("HydroBase_MatterSources", fill_matter_sources);
   reg.function("HydroBase_InitialMatterSources", fill_matter_sources);
   reg.function("HydroBase_ConservedFromPrimitives", [](remnant::Context& ctx) {
+    refresh_field(ctx);
     conserved_from_primitives(ctx);
     fill_matter_sources(ctx);
   });
   reg.function("HydroBase_RecoverInitialPrimitives", [](remnant::Context& ctx) {
+    refresh_field(ctx);
     recover_all(ctx, "HydroBase_RecoverInitialPrimitives");
     fill_matter_sources(ctx);
   });
   reg.function("HydroBase_RecoverWithNewMetric", [](remnant::Context& ctx) {
+    refresh_field(ctx);
     recover_all(ctx, "HydroBase_RecoverWithNewMetric");
     fill_matter_sources(ctx);
   });

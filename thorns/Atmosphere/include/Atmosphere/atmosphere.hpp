@@ -23,7 +23,7 @@ struct Atmosphere {
   double rho = 0.9e-14;    // rho_atm = xi rho_thr
   double eps = 0, press = 0, T = 0, ye = 0.5, cs2 = 0;
   YeSource ye_source = YeSource::parameter;
-  double sigma_max = 100;  // cap on b^2/rho in atmosphere cells (magnetic fields only)
+  double sigma_max = 1000;  // cap on b^2/rho in atmosphere cells (magnetic fields only)
 
   // rho (or D in con2prim step (i)) below the threshold; NaN counts as atmosphere.
   bool is_atmosphere(double rho_or_D) const { return !(rho_or_D >= rho_thr); }

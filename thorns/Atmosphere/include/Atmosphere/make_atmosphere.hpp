@@ -21,7 +21,7 @@ struct AtmosphereConfig {
   double poly_K = 100.0;   // analytic EOS only
   double poly_gamma = 2.0;
   double ye_analytic = 0.5;
-  double sigma_max = 100;  // b^2/rho cap in atmosphere cells
+  double sigma_max = 1000;  // b^2/rho cap in atmosphere cells
 };
 
 inline void check(const AtmosphereConfig& c) {
