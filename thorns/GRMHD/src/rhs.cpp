@@ -212,9 +212,12 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
           const double ap = alpha * ptot;
           for (int d = 0; d < 3; ++d)
             if (used[d]) {
-              const double log_area = (ff[d][id[d] + 1] - ff[d][id[d]]) / vw[d][id[d]];
-              src[kS1 + d] += ap * log_area;
-              if constexpr (Mhd) src[kS1 + d] += magnetic_geometric_source(d, fs, ms, pm, fd, df, log_area);
+              // (ap * dA) / V, the hydro association: its bits must not change.
+              src[kS1 + d] += ap * (ff[d][id[d] + 1] - ff[d][id[d]]) / vw[d][id[d]];
+              if constexpr (Mhd) {
+                const double log_area = (ff[d][id[d] + 1] - ff[d][id[d]]) / vw[d][id[d]];
+                src[kS1 + d] += magnetic_geometric_source(d, fs, ms, pm, fd, df, log_area);
+              }
             }
         }
         const double p2 = psi * psi, psi6 = p2 * p2 * p2;
