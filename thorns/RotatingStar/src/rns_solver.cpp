@@ -182,7 +182,8 @@ bool RotatingStarModel::matter_from_bernoulli(bool ramping) {
       }
       if (i == p_.nr && inside && !ramping)
         throw RnsError(fmt("no stellar surface inside r_out = %g along theta = %g: the rotation is beyond mass shedding or the star does not fit the grid (r_out_factor)",
-                           r_out(), std::acos(mu)));
+                           r_out(), std::acos(mu)) +
+                       (field_.active() ? fmt("; a toroidal field (K_m = %g) makes the star prolate: try r_out_factor 3 or more, or K_m is too strong for an equilibrium", field_.K_m) : ""));
     }
   }
   if (p_.axis_ratio == 0) {
