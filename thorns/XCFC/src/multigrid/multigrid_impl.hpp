@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "XCFC/multigrid/multigrid.hpp"
+#include "factor_cache.hpp"
 #include "level.hpp"
 #include "work_partition.hpp"
 
@@ -86,6 +87,7 @@ struct Multigrid::Impl {
   void set_fine_equation(const ScalarEquation& eq);
   void set_coarse_equations(const ScalarEquation& eq);
   bool coarse_ready = false;
+  FactorCache factor_cache;  // line factors of geometry-only equations, kept between solves
 
   void load(const std::vector<double>& u);
   void store(std::vector<double>& u) const;
