@@ -52,6 +52,8 @@ struct Multigrid::Impl {
   // largest residual after a red-black sweep, which otherwise dominates the L-infinity stopping
   // test for V-cycles after the rest of the grid has converged.
   void relax_origin(std::size_t l, const ScalarEquation& eq);
+  // 2D spherical: `passes` zebra passes of the theta lines of the innermost `shells` radial cells.
+  void relax_origin_shells(std::size_t l, const ScalarEquation& eq, int shells, int passes);
 
   // 3D cylindrical and spherical levels: zebra lines along d. Every rank holds the whole level and
   // does the rest of the cycle itself; on large levels the lines of each colour are dealt out in

@@ -4,6 +4,7 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "boundary_ghosts.hpp"
 #include "level_ops.hpp"
@@ -131,9 +132,43 @@ void Multigrid::Impl::relax(std::size_t l, const ScalarEquation& eq, int sweeps)
   for (int sweep = 0; sweep < sweeps; ++sweep)
     for (int d = 0; d < 2; ++d) smooth_lines(l, eq, d);
   // 2D spherical: extra theta-line passes over the innermost radial cells (Brandt's local
-  // relaxation), where the operator's largest coefficients leave the largest residual.
-  if (levels[l].shape.boundary[0][0] == Boundary::origin)
-    for (int pass = 0; pass < 2; ++pass) smooth_lines(l, eq, 1, std::min(4, levels[l].shape.n[0]));
+  // relaxation), where the operator's largest coefficients leave the largest residual: every shell
+  // whose angular coupling exceeds the radial one (r dtheta < dr: i < 1/dtheta), 8 passes. The
+  // warm-started solves of the migration run took 23.8 V-cycles per xCFC solve with 2 passes over
+  // 4 shells, 15.0 with these (about 6 % more work per cycle).
+  const Level& L = levels[l];
+  if (L.shape.boundary[0][0] == Boundary::origin) {
+    // At most n0 / 16 shells: on radially coarse grids 1/dtheta is a large part of the level.
+    const int n0 = L.shape.n[0], angular = static_cast<int>(std::ceil(1.0 / L.shape.dx[1]));
+    const int shells = std::min({std::max(4, angular), std::max(4, n0 / 16), n0});
+    relax_origin_shells(l, eq, shells, 8);
+  }
+}
+
+void Multigrid::Impl::relax_origin_shells(std::size_t l, const ScalarEquation& eq, int shells, int passes) {
+  const auto& p = work.part(l);
+  // Distributed: the shells' theta lines are whole columns; when rank 0 owns all of them in the
+  // line split, it relaxes them from the complete level with one exchange before and one after
+  // (instead of two whole-level exchanges per pass), the same updates in the same order as one rank.
+  const int rank0_lines = static_cast<int>(static_cast<long long>(levels[l].shape.n[0]) / work.nranks());
+  const bool local = p.dist && p.s == 1 && shells <= rank0_lines;
+  if (!local) {
+    for (int pass = 0; pass < passes; ++pass) smooth_lines(l, eq, 1, shells);
+    return;
+  }
+  Level& L = levels[l];
+  work.replicate(l, L.u, true);
+  if (work.rank() == 0) {
+    const Lines ln(L, 1);
+    long long n = 0;
+    for (int pass = 0; pass < passes; ++pass)
+      for (int colour = 0; colour < 2; ++colour) {
+        fill_ghosts(L, eq, L.u, false);
+        n += line_pass(L, ln, colour, 0, shells);
+      }
+    count(l, n);
+  }
+  work.gather_columns(l, L.u);
 }
 
 }  // namespace remnant::xcfc
