@@ -153,6 +153,7 @@ int Multigrid::distributed_levels() const {
 }
 
 long long Multigrid::reused_factorisations() const { return impl_->factor_cache.hits(); }
+long long Multigrid::received_bytes() const { return impl_->work.received_bytes(); }
 
 SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, const SolveSettings& s) {
   Impl& m = *impl_;

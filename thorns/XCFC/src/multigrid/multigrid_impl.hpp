@@ -43,8 +43,8 @@ struct Multigrid::Impl {
 
   // One zebra pass. Distributed 2D levels: lines across the slabs (d = s) are local to the slab and
   // need the halo rows between colours; lines along s cross the slabs, so they are solved whole,
-  // split by i, from a complete level (Allgatherv), with the neighbouring lines exchanged between
-  // colours and the result made complete again.
+  // split by i, after a transpose from slabs to columns (MPI_Alltoallv), with the neighbouring
+  // lines exchanged between colours, and transposed back to the slabs.
   // Lines t < limit only: the local relaxation next to the origin.
   void smooth_lines(std::size_t l, const ScalarEquation& eq, int d, int limit = std::numeric_limits<int>::max());
 

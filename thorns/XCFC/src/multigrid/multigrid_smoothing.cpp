@@ -35,7 +35,7 @@ void Multigrid::Impl::smooth_lines(std::size_t l, const ScalarEquation& eq, int 
   const Lines ln(L, d);
   const bool along = p.dist && d == p.s;
   int t0 = 0, t1 = ln.count;
-  if (along) t0 = p.line_lo, t1 = p.line_hi, work.replicate(l, L.u, true);
+  if (along) t0 = p.line_lo, t1 = p.line_hi, work.to_columns(l, L.u);
   else if (p.dist) t0 = p.lo, t1 = p.hi;
   t1 = std::max(t0, std::min(t1, limit));
   long long n = 0;
@@ -48,7 +48,7 @@ void Multigrid::Impl::smooth_lines(std::size_t l, const ScalarEquation& eq, int 
     fill_ghosts(L, eq, L.u, false);
     n += line_pass(L, ln, colour, t0, t1);
   }
-  if (along) work.gather_columns(l, L.u);
+  if (along) work.to_slabs(l, L.u);
   count(l, n);
 }
 
@@ -148,8 +148,8 @@ void Multigrid::Impl::relax(std::size_t l, const ScalarEquation& eq, int sweeps)
 void Multigrid::Impl::relax_origin_shells(std::size_t l, const ScalarEquation& eq, int shells, int passes) {
   const auto& p = work.part(l);
   // Distributed: the shells' theta lines are whole columns; when rank 0 owns all of them in the
-  // line split, it relaxes them from the complete level with one exchange before and one after
-  // (instead of two whole-level exchanges per pass), the same updates in the same order as one rank.
+  // line split, it relaxes them with one transpose before and one after (instead of two per pass),
+  // the same updates in the same order as one rank.
   const int rank0_lines = static_cast<int>(static_cast<long long>(levels[l].shape.n[0]) / work.nranks());
   const bool local = p.dist && p.s == 1 && shells <= rank0_lines;
   if (!local) {
@@ -157,7 +157,7 @@ void Multigrid::Impl::relax_origin_shells(std::size_t l, const ScalarEquation& e
     return;
   }
   Level& L = levels[l];
-  work.replicate(l, L.u, true);
+  work.to_columns(l, L.u);
   if (work.rank() == 0) {
     const Lines ln(L, 1);
     long long n = 0;
@@ -168,7 +168,7 @@ void Multigrid::Impl::relax_origin_shells(std::size_t l, const ScalarEquation& e
       }
     count(l, n);
   }
-  work.gather_columns(l, L.u);
+  work.to_slabs(l, L.u);
 }
 
 }  // namespace remnant::xcfc
