@@ -1,7 +1,8 @@
 // What the distributed multigrid moves between ranks (work_partition.hpp): on a 2D spherical level
 // split in theta slabs, the theta lines cross the slabs and are solved in a line split by radius.
 // They reach it by a transpose (each rank receives about 1/P of the level per pass), not by making
-// the whole level complete on every rank (each rank received (P-1)/P of it, twice per pass).
+// the whole level complete on every rank (each rank received (P-1)/P of it, twice per pass), and
+// the origin's local relaxation gathers only its shells on rank 0.
 // Measured as bytes received per V-cycle in units of the finest level's interior; the solution
 // keeps the bits of one rank (XCFCMultigridMPI.Spherical2D). Run on 2 ranks by XCFC.mpi2.
 #include <gtest/gtest.h>
@@ -48,7 +49,7 @@ TEST(XCFCMultigridMPI, ExchangeVolume2D) {
   const double level = 8.0 * static_cast<double>(s.cells());
   const double per_cycle = static_cast<double>(mg.received_bytes() - before) / st.cycles / level;
   if (rank == 0) std::printf("2D spherical 256 x 32 on %d ranks: %d V-cycles, received per V-cycle %.2f levels\n", nranks, st.cycles, per_cycle);
-  EXPECT_LT(per_cycle, 100.0);
+  EXPECT_LT(per_cycle, 4.5);  // 8.48 with whole-level Allgathers, 4.72 with transposes, 3.55 now
 }
 
 }  // namespace

@@ -147,17 +147,16 @@ void Multigrid::Impl::relax(std::size_t l, const ScalarEquation& eq, int sweeps)
 
 void Multigrid::Impl::relax_origin_shells(std::size_t l, const ScalarEquation& eq, int shells, int passes) {
   const auto& p = work.part(l);
-  // Distributed: the shells' theta lines are whole columns; when rank 0 owns all of them in the
-  // line split, it relaxes them with one transpose before and one after (instead of two per pass),
-  // the same updates in the same order as one rank.
-  const int rank0_lines = static_cast<int>(static_cast<long long>(levels[l].shape.n[0]) / work.nranks());
-  const bool local = p.dist && p.s == 1 && shells <= rank0_lines;
-  if (!local) {
+  // Distributed: the shells' theta lines are whole columns; rank 0 gathers them (and the next
+  // column, which their stencil reads), relaxes them and sends them back: two small exchanges
+  // instead of two transposes per pass, the same updates in the same order as one rank.
+  if (!p.dist || p.s != 1) {
     for (int pass = 0; pass < passes; ++pass) smooth_lines(l, eq, 1, shells);
     return;
   }
+  const int ncols = std::min(shells + 1, levels[l].shape.n[0]);
   Level& L = levels[l];
-  work.to_columns(l, L.u);
+  work.columns_to_root(l, L.u, ncols);
   if (work.rank() == 0) {
     const Lines ln(L, 1);
     long long n = 0;
@@ -168,7 +167,7 @@ void Multigrid::Impl::relax_origin_shells(std::size_t l, const ScalarEquation& e
       }
     count(l, n);
   }
-  work.to_slabs(l, L.u);
+  work.columns_from_root(l, L.u, ncols);
 }
 
 }  // namespace remnant::xcfc

@@ -159,6 +159,48 @@ void WorkPartition::to_slabs(std::size_t l, std::vector<double>& a) {
   received_ += static_cast<long long>(sizeof(double)) * (static_cast<long long>(m) - p.ts_r[me]);
 }
 
+void WorkPartition::columns_to_root(std::size_t l, std::vector<double>& a, int ncols) {
+  Part& p = parts[l];
+  const Level& L = (*lv)[l];
+  const auto P = static_cast<std::size_t>(nranks_);
+  p.root_counts.assign(P, 0), p.root_displs.assign(P, 0);
+  for (std::size_t r = 0; r < P; ++r) p.root_counts[r] = p.col_counts[r] * ncols, p.root_displs[r] = p.col_displs[r] * ncols;
+  const std::size_t all = static_cast<std::size_t>(L.shape.n[1]) * static_cast<std::size_t>(ncols);
+  if (p.trecv.size() < all) p.trecv.resize(all);
+  if (p.tsend.size() < all) p.tsend.resize(all);
+  double* v = a.data();
+  std::size_t m = 0;
+  for (int j = p.lo; j < p.hi; ++j)
+    for (int i = 0; i < ncols; ++i) p.tsend[m++] = v[L.at(i, j, 0)];
+  MPI_Gatherv(p.tsend.data(), static_cast<int>(m), MPI_DOUBLE, p.trecv.data(), p.root_counts.data(),
+              p.root_displs.data(), MPI_DOUBLE, 0, comm);
+  if (rank_ != 0) return;
+  m = 0;
+  for (int j = 0; j < L.shape.n[1]; ++j)
+    for (int i = 0; i < ncols; ++i, ++m)
+      if (j >= p.hi) v[L.at(i, j, 0)] = p.trecv[m];  // rank 0's own rows are j < hi
+  received_ += static_cast<long long>(sizeof(double)) * static_cast<long long>(all - static_cast<std::size_t>(p.root_counts[0]));
+}
+
+void WorkPartition::columns_from_root(std::size_t l, std::vector<double>& a, int ncols) {
+  Part& p = parts[l];
+  const Level& L = (*lv)[l];
+  double* v = a.data();
+  if (rank_ == 0) {
+    std::size_t m = 0;
+    for (int j = 0; j < L.shape.n[1]; ++j)
+      for (int i = 0; i < ncols; ++i) p.tsend[m++] = v[L.at(i, j, 0)];
+  }
+  const int mine = p.root_counts[static_cast<std::size_t>(rank_)];
+  MPI_Scatterv(p.tsend.data(), p.root_counts.data(), p.root_displs.data(), MPI_DOUBLE, p.trecv.data(), mine, MPI_DOUBLE,
+               0, comm);
+  if (rank_ == 0) return;
+  std::size_t m = 0;
+  for (int j = p.lo; j < p.hi; ++j)
+    for (int i = 0; i < ncols; ++i) v[L.at(i, j, 0)] = p.trecv[m++];
+  received_ += static_cast<long long>(sizeof(double)) * mine;
+}
+
 int WorkPartition::neighbour(int dr) const {
   const int r = rank_ + dr;
   return r >= 0 && r < nranks_ ? r : MPI_PROC_NULL;

@@ -31,6 +31,7 @@ class WorkPartition {
     // cols[r + 1]) belong to rank r, which also receives one neighbouring column on each side.
     std::vector<int> cols, tc_s, tc_sd, tc_r, tc_rd, ts_s, ts_sd, ts_r, ts_rd;
     std::vector<double> tsend, trecv;
+    std::vector<int> root_counts, root_displs;  // columns_to_root layout (rows per rank times ncols)
   };
   // Below this a level is not split: the halo messages would cost more than the work saved.
   static constexpr std::size_t kMinCells = 1024;
@@ -67,6 +68,10 @@ class WorkPartition {
   // complete in i again (halo planes not included: halo() before the next stencil).
   void to_columns(std::size_t l, std::vector<double>& a);
   void to_slabs(std::size_t l, std::vector<double>& a);
+  // 2D: the first `ncols` columns of every row to rank 0, which then holds them complete in j
+  // (MPI_Gatherv), and back from rank 0 to the slabs' owners (MPI_Scatterv).
+  void columns_to_root(std::size_t l, std::vector<double>& a, int ncols);
+  void columns_from_root(std::size_t l, std::vector<double>& a, int ncols);
   // Bytes this rank has received in the multigrid's exchanges (machine-independent cost count).
   long long received_bytes() const { return received_; }
 
