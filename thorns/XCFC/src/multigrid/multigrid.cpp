@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "boundary_ghosts.hpp"
+#include "heap_reuse.hpp"
 #include "level_ops.hpp"
 #include "line_relaxation.hpp"
 #include "line_relaxation_3d.hpp"
@@ -29,6 +30,7 @@ bool coarsens(const GridShape& s, int d) {
 }  // namespace
 
 Multigrid::Impl::Impl(const GridShape& shape, MPI_Comm c) : work(c) {
+  keep_freed_memory_for_reuse();
   levels.emplace_back(shape);
   {
     const Level& L = levels[0];
@@ -102,11 +104,14 @@ void Multigrid::Impl::set_fine_equation(const ScalarEquation& eq) {
 
 void Multigrid::Impl::set_coarse_equations(const ScalarEquation& eq) {
   if (coarse_ready) return;
+  const bool zero_k = FactorCache::zero_k(eq);
   for (std::size_t l = 0; l + 1 < levels.size(); ++l) {
     Level &F = levels[l], &C = levels[l + 1];
     // Once per solve, by every rank: the coarse equations are complete everywhere.
     const Range RF = work.full(l), RC = work.full(l + 1);
-    restrict_interior(F, C, F.k_eq, C.k_eq, RF, RC);
+    // No matter coefficient: zeros restrict to zeros (the same bits, none of the work).
+    if (zero_k) C.k_eq.assign(C.cells(), 0.0);
+    else restrict_interior(F, C, F.k_eq, C.k_eq, RF, RC);
     restrict_interior(F, C, F.s0, C.s0, RF, RC);
     if (F.s1.empty()) C.s1.clear(); else restrict_interior(F, C, F.s1, C.s1, RF, RC);
     if (F.s7.empty()) C.s7.clear(); else restrict_interior(F, C, F.s7, C.s7, RF, RC);
@@ -115,10 +120,13 @@ void Multigrid::Impl::set_coarse_equations(const ScalarEquation& eq) {
     C.r.resize(C.cells());
     if (C.u.size() != C.ghosted_size) C.u.assign(C.ghosted_size, 0.0);
   }
-  for (auto& L : levels) {
-    set_line_ends(L, eq);
-    if (L.shape.dimension == 3 && L.shape.coordinates != CoordinateSystem::cartesian) factor_lines_3d(L, eq);
-    else factor_lines(L);
+  if (!factor_cache.acquire(levels, eq)) {
+    for (auto& L : levels) {
+      set_line_ends(L, eq);
+      if (L.shape.dimension == 3 && L.shape.coordinates != CoordinateSystem::cartesian) factor_lines_3d(L, eq);
+      else factor_lines(L);
+    }
+    factor_cache.computed(levels);
   }
   coarse_ready = true;
 }
@@ -145,6 +153,9 @@ int Multigrid::distributed_levels() const {
   for (const auto& p : impl_->work.all_parts()) n += p.dist ? 1 : 0;
   return n;
 }
+
+long long Multigrid::reused_factorisations() const { return impl_->factor_cache.hits(); }
+long long Multigrid::received_bytes() const { return impl_->work.received_bytes(); }
 
 SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, const SolveSettings& s) {
   Impl& m = *impl_;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "XCFC/multigrid/multigrid.hpp"
+#include "factor_cache.hpp"
 #include "level.hpp"
 #include "work_partition.hpp"
 
@@ -42,8 +43,8 @@ struct Multigrid::Impl {
 
   // One zebra pass. Distributed 2D levels: lines across the slabs (d = s) are local to the slab and
   // need the halo rows between colours; lines along s cross the slabs, so they are solved whole,
-  // split by i, from a complete level (Allgatherv), with the neighbouring lines exchanged between
-  // colours and the result made complete again.
+  // split by i, after a transpose from slabs to columns (MPI_Alltoallv), with the neighbouring
+  // lines exchanged between colours, and transposed back to the slabs.
   // Lines t < limit only: the local relaxation next to the origin.
   void smooth_lines(std::size_t l, const ScalarEquation& eq, int d, int limit = std::numeric_limits<int>::max());
 
@@ -51,6 +52,8 @@ struct Multigrid::Impl {
   // largest residual after a red-black sweep, which otherwise dominates the L-infinity stopping
   // test for V-cycles after the rest of the grid has converged.
   void relax_origin(std::size_t l, const ScalarEquation& eq);
+  // 2D spherical: `passes` zebra passes of the theta lines of the innermost `shells` radial cells.
+  void relax_origin_shells(std::size_t l, const ScalarEquation& eq, int shells, int passes);
 
   // 3D cylindrical and spherical levels: zebra lines along d. Every rank holds the whole level and
   // does the rest of the cycle itself; on large levels the lines of each colour are dealt out in
@@ -86,6 +89,7 @@ struct Multigrid::Impl {
   void set_fine_equation(const ScalarEquation& eq);
   void set_coarse_equations(const ScalarEquation& eq);
   bool coarse_ready = false;
+  FactorCache factor_cache;  // line factors of geometry-only equations, kept between solves
 
   void load(const std::vector<double>& u);
   void store(std::vector<double>& u) const;

@@ -79,9 +79,128 @@ void WorkPartition::build(const std::vector<Level>& levels) {
       p.sbuf.assign(static_cast<std::size_t>(std::max((p.line_hi - p.line_lo) * n1, n1)), 0.0);
       p.rbuf.assign(static_cast<std::size_t>(n1), 0.0);
       p.gbuf.assign(sh.cells(), 0.0);
+      set_transposes(p, sh, b);
     }
   }
 }
+void WorkPartition::set_transposes(Part& p, const GridShape& sh, const std::vector<int>& slab) {
+  const auto P = static_cast<std::size_t>(nranks_), me = static_cast<std::size_t>(rank_);
+  const int n0 = sh.n[0];
+  p.cols.assign(P + 1, 0);
+  for (std::size_t r = 0; r <= P; ++r) p.cols[r] = static_cast<int>(static_cast<long long>(r) * n0 / nranks_);
+  auto ext = [&](std::size_t r) { return std::min(n0, p.cols[r + 1] + 1) - std::max(0, p.cols[r] - 1); };
+  auto own = [&](std::size_t r) { return p.cols[r + 1] - p.cols[r]; };
+  auto rows = [&](std::size_t r) { return slab[r + 1] - slab[r]; };
+  for (auto* v : {&p.tc_s, &p.tc_sd, &p.tc_r, &p.tc_rd, &p.ts_s, &p.ts_sd, &p.ts_r, &p.ts_rd}) v->assign(P, 0);
+  for (std::size_t r = 0; r < P; ++r) {
+    p.tc_s[r] = ext(r) * rows(me), p.tc_r[r] = ext(me) * rows(r);
+    p.ts_s[r] = own(me) * rows(r), p.ts_r[r] = own(r) * rows(me);
+    if (r > 0) {
+      p.tc_sd[r] = p.tc_sd[r - 1] + p.tc_s[r - 1], p.tc_rd[r] = p.tc_rd[r - 1] + p.tc_r[r - 1];
+      p.ts_sd[r] = p.ts_sd[r - 1] + p.ts_s[r - 1], p.ts_rd[r] = p.ts_rd[r - 1] + p.ts_r[r - 1];
+    }
+  }
+  const std::size_t most = static_cast<std::size_t>(
+      std::max({p.tc_sd[P - 1] + p.tc_s[P - 1], p.tc_rd[P - 1] + p.tc_r[P - 1], p.ts_sd[P - 1] + p.ts_s[P - 1],
+                p.ts_rd[P - 1] + p.ts_r[P - 1]}));
+  p.tsend.assign(most, 0.0), p.trecv.assign(most, 0.0);
+}
+
+void WorkPartition::to_columns(std::size_t l, std::vector<double>& a) {
+  Part& p = parts[l];
+  const Level& L = (*lv)[l];
+  const int n0 = L.shape.n[0];
+  double* v = a.data();
+  std::size_t m = 0;
+  for (int r = 0; r < nranks_; ++r) {
+    const auto u = static_cast<std::size_t>(r);
+    const int i0 = std::max(0, p.cols[u] - 1), i1 = std::min(n0, p.cols[u + 1] + 1);
+    for (int j = p.lo; j < p.hi; ++j)
+      for (int i = i0; i < i1; ++i) p.tsend[m++] = v[L.at(i, j, 0)];
+  }
+  MPI_Alltoallv(p.tsend.data(), p.tc_s.data(), p.tc_sd.data(), MPI_DOUBLE, p.trecv.data(), p.tc_r.data(),
+                p.tc_rd.data(), MPI_DOUBLE, comm);
+  const auto me = static_cast<std::size_t>(rank_);
+  const int i0 = std::max(0, p.cols[me] - 1), i1 = std::min(n0, p.cols[me + 1] + 1);
+  m = 0;
+  for (int r = 0; r < nranks_; ++r) {
+    const auto u = static_cast<std::size_t>(r);
+    for (int j = p.col_displs[u]; j < p.col_displs[u] + p.col_counts[u]; ++j)
+      for (int i = i0; i < i1; ++i) {
+        if (r != rank_) v[L.at(i, j, 0)] = p.trecv[m];
+        ++m;
+      }
+  }
+  received_ += static_cast<long long>(sizeof(double)) * (static_cast<long long>(m) - p.tc_r[me]);
+}
+
+void WorkPartition::to_slabs(std::size_t l, std::vector<double>& a) {
+  Part& p = parts[l];
+  const Level& L = (*lv)[l];
+  double* v = a.data();
+  const auto me = static_cast<std::size_t>(rank_);
+  std::size_t m = 0;
+  for (int r = 0; r < nranks_; ++r) {
+    const auto u = static_cast<std::size_t>(r);
+    for (int j = p.col_displs[u]; j < p.col_displs[u] + p.col_counts[u]; ++j)
+      for (int i = p.cols[me]; i < p.cols[me + 1]; ++i) p.tsend[m++] = v[L.at(i, j, 0)];
+  }
+  MPI_Alltoallv(p.tsend.data(), p.ts_s.data(), p.ts_sd.data(), MPI_DOUBLE, p.trecv.data(), p.ts_r.data(),
+                p.ts_rd.data(), MPI_DOUBLE, comm);
+  m = 0;
+  for (int r = 0; r < nranks_; ++r) {
+    const auto u = static_cast<std::size_t>(r);
+    for (int j = p.lo; j < p.hi; ++j)
+      for (int i = p.cols[u]; i < p.cols[u + 1]; ++i) {
+        if (r != rank_) v[L.at(i, j, 0)] = p.trecv[m];
+        ++m;
+      }
+  }
+  received_ += static_cast<long long>(sizeof(double)) * (static_cast<long long>(m) - p.ts_r[me]);
+}
+
+void WorkPartition::columns_to_root(std::size_t l, std::vector<double>& a, int ncols) {
+  Part& p = parts[l];
+  const Level& L = (*lv)[l];
+  const auto P = static_cast<std::size_t>(nranks_);
+  p.root_counts.assign(P, 0), p.root_displs.assign(P, 0);
+  for (std::size_t r = 0; r < P; ++r) p.root_counts[r] = p.col_counts[r] * ncols, p.root_displs[r] = p.col_displs[r] * ncols;
+  const std::size_t all = static_cast<std::size_t>(L.shape.n[1]) * static_cast<std::size_t>(ncols);
+  if (p.trecv.size() < all) p.trecv.resize(all);
+  if (p.tsend.size() < all) p.tsend.resize(all);
+  double* v = a.data();
+  std::size_t m = 0;
+  for (int j = p.lo; j < p.hi; ++j)
+    for (int i = 0; i < ncols; ++i) p.tsend[m++] = v[L.at(i, j, 0)];
+  MPI_Gatherv(p.tsend.data(), static_cast<int>(m), MPI_DOUBLE, p.trecv.data(), p.root_counts.data(),
+              p.root_displs.data(), MPI_DOUBLE, 0, comm);
+  if (rank_ != 0) return;
+  m = 0;
+  for (int j = 0; j < L.shape.n[1]; ++j)
+    for (int i = 0; i < ncols; ++i, ++m)
+      if (j >= p.hi) v[L.at(i, j, 0)] = p.trecv[m];  // rank 0's own rows are j < hi
+  received_ += static_cast<long long>(sizeof(double)) * static_cast<long long>(all - static_cast<std::size_t>(p.root_counts[0]));
+}
+
+void WorkPartition::columns_from_root(std::size_t l, std::vector<double>& a, int ncols) {
+  Part& p = parts[l];
+  const Level& L = (*lv)[l];
+  double* v = a.data();
+  if (rank_ == 0) {
+    std::size_t m = 0;
+    for (int j = 0; j < L.shape.n[1]; ++j)
+      for (int i = 0; i < ncols; ++i) p.tsend[m++] = v[L.at(i, j, 0)];
+  }
+  const int mine = p.root_counts[static_cast<std::size_t>(rank_)];
+  MPI_Scatterv(p.tsend.data(), p.root_counts.data(), p.root_displs.data(), MPI_DOUBLE, p.trecv.data(), mine, MPI_DOUBLE,
+               0, comm);
+  if (rank_ == 0) return;
+  std::size_t m = 0;
+  for (int j = p.lo; j < p.hi; ++j)
+    for (int i = 0; i < ncols; ++i) v[L.at(i, j, 0)] = p.trecv[m++];
+  received_ += static_cast<long long>(sizeof(double)) * mine;
+}
+
 int WorkPartition::neighbour(int dr) const {
   const int r = rank_ + dr;
   return r >= 0 && r < nranks_ ? r : MPI_PROC_NULL;
@@ -95,6 +214,10 @@ void WorkPartition::replicate(std::size_t l, std::vector<double>& a, bool ghoste
   if (!p.dist) return;
   MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, a.data(), ghosted ? p.counts.data() : p.icounts.data(),
                  ghosted ? p.displs.data() : p.idispls.data(), MPI_DOUBLE, comm);
+  const auto& c = ghosted ? p.counts : p.icounts;
+  long long n = 0;
+  for (int r = 0; r < nranks_; ++r) n += r == rank_ ? 0 : c[static_cast<std::size_t>(r)];
+  received_ += static_cast<long long>(sizeof(double)) * n;
 }
 void WorkPartition::halo(std::size_t l, std::vector<double>& a) {
   Part& p = parts[l];
@@ -106,6 +229,7 @@ void WorkPartition::halo(std::size_t l, std::vector<double>& a) {
                comm, MPI_STATUS_IGNORE);
   MPI_Sendrecv(plane(p.lo), w, MPI_DOUBLE, neighbour(-1), 12, plane(p.hi), w, MPI_DOUBLE, neighbour(1), 12, comm,
                MPI_STATUS_IGNORE);
+  received_ += static_cast<long long>(sizeof(double)) * w * ((rank_ > 0) + (rank_ + 1 < nranks_));
   if (!p.flip) return;
   const Level& L = (*lv)[l];
   for (int j = p.lo; j < p.hi; ++j) p.sbuf[static_cast<std::size_t>(j - p.lo)] = v[L.at(0, j, 0)];
@@ -132,6 +256,7 @@ void WorkPartition::exchange_columns(std::size_t l, std::vector<double>& a) {
   MPI_Sendrecv(p.sbuf.data(), n1, MPI_DOUBLE, neighbour(-1), 14, p.rbuf.data(), n1, MPI_DOUBLE, neighbour(1), 14, comm,
                MPI_STATUS_IGNORE);
   if (rank_ + 1 < nranks_) unpack(p.line_hi);
+  received_ += static_cast<long long>(sizeof(double)) * n1 * ((rank_ > 0) + (rank_ + 1 < nranks_));
 }
 void WorkPartition::gather_columns(std::size_t l, std::vector<double>& a) {
   Part& p = parts[l];
@@ -143,6 +268,7 @@ void WorkPartition::gather_columns(std::size_t l, std::vector<double>& a) {
     for (int j = 0; j < n1; ++j) p.sbuf[m++] = v[L.at(i, j, 0)];
   MPI_Allgatherv(p.sbuf.data(), static_cast<int>(m), MPI_DOUBLE, p.gbuf.data(), p.blk_counts.data(),
                  p.blk_displs.data(), MPI_DOUBLE, comm);
+  received_ += static_cast<long long>(sizeof(double)) * (static_cast<long long>(n0) * n1 - static_cast<long long>(m));
   m = 0;
   for (int i = 0; i < n0; ++i)
     for (int j = 0; j < n1; ++j) v[L.at(i, j, 0)] = p.gbuf[m++];

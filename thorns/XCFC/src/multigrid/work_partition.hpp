@@ -27,6 +27,11 @@ class WorkPartition {
     // and the packed column blocks of the line split.
     std::vector<int> counts, displs, icounts, idispls, col_counts, col_displs, blk_counts, blk_displs;
     std::vector<double> sbuf, rbuf, gbuf;  // exchange buffers (no allocation in the cycles)
+    // 2D transposes between slabs and the line split (MPI_Alltoallv layouts): columns [cols[r],
+    // cols[r + 1]) belong to rank r, which also receives one neighbouring column on each side.
+    std::vector<int> cols, tc_s, tc_sd, tc_r, tc_rd, ts_s, ts_sd, ts_r, ts_rd;
+    std::vector<double> tsend, trecv;
+    std::vector<int> root_counts, root_displs;  // columns_to_root layout (rows per rank times ncols)
   };
   // Below this a level is not split: the halo messages would cost more than the work saved.
   static constexpr std::size_t kMinCells = 1024;
@@ -58,15 +63,28 @@ class WorkPartition {
   void exchange_columns(std::size_t l, std::vector<double>& a);
   // 2D line split: the owned lines to every rank (the whole interior complete again).
   void gather_columns(std::size_t l, std::vector<double>& a);
+  // 2D: from slabs to the line split, each rank's columns and their neighbours complete in j
+  // (1/P of the level per rank, where replicate moves all of it), and back, each rank's slab
+  // complete in i again (halo planes not included: halo() before the next stencil).
+  void to_columns(std::size_t l, std::vector<double>& a);
+  void to_slabs(std::size_t l, std::vector<double>& a);
+  // 2D: the first `ncols` columns of every row to rank 0, which then holds them complete in j
+  // (MPI_Gatherv), and back from rank 0 to the slabs' owners (MPI_Scatterv).
+  void columns_to_root(std::size_t l, std::vector<double>& a, int ncols);
+  void columns_from_root(std::size_t l, std::vector<double>& a, int ncols);
+  // Bytes this rank has received in the multigrid's exchanges (machine-independent cost count).
+  long long received_bytes() const { return received_; }
 
  private:
   bool splittable(const GridShape& s) const;
+  void set_transposes(Part& p, const GridShape& sh, const std::vector<int>& slab);
   int neighbour(int dr) const;
 
   MPI_Comm comm = MPI_COMM_SELF;
   int rank_ = 0, nranks_ = 1;
   const std::vector<Level>* lv = nullptr;
   std::vector<Part> parts;
+  mutable long long received_ = 0;
 };
 
 }  // namespace remnant::xcfc

@@ -78,6 +78,11 @@ class Multigrid {
   const GridShape& shape() const;
   int levels() const;
   int distributed_levels() const;  // leading levels whose work is split between the ranks
+  // Solves that reused the line factors of a geometry-only equation (k zero, linear) from an
+  // earlier solve instead of refactoring.
+  long long reused_factorisations() const;
+  // Bytes this rank has received in the exchanges of the distributed levels since construction.
+  long long received_bytes() const;
   // Solves in place: u holds the initial guess (warm start) and returns the solution.
   SolveStats solve(const ScalarEquation& eq, std::vector<double>& u, const SolveSettings& s);
   // Max-norm residual of the finest-level discrete equation.
