@@ -49,6 +49,7 @@ void check_magnetic_field(const Context& ctx, SourceData& src, std::vector<std::
 std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::string>& notes) {
   const auto files = expand_file_patterns(ctx.param<std::vector<std::string>>("HandOff", "files"));
   const auto& format = ctx.param<std::string>("HandOff", "format");
+  const auto& parity = ctx.param<std::string>("HandOff", "magnetic_parity");
   auto src = std::make_shared<SourceData>();
   std::array<bool, 3> mirrors{false, false, false};
   for (const auto& r : ctx.param<std::vector<std::string>>("HandOff", "reflection")) mirrors[static_cast<std::size_t>(r[0] - 'x')] = true;
@@ -61,9 +62,10 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
     o.required = {"rho"};
     o.reflection = mirrors;
     o.buffer_zones = static_cast<int>(ctx.param<std::int64_t>("HandOff", "buffer_zones"));
+    o.axial_magnetic_field = parity == "axial_vector";
     *src = read_carpet(o);
   } else {
-    *src = read_remnant_volume(files, mirrors);
+    *src = read_remnant_volume(files, mirrors, parity != "vector");
   }
   check_magnetic_field(ctx, *src, notes);
   MissingPolicy policy;
