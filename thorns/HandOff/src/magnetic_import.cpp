@@ -150,25 +150,37 @@ hydrobase::CovariantPotential table_potential(const Block& b, EdgeTable& t) {
 
 // 2D cylindrical (march along R from the axis, fluxes through z faces) or spherical (along theta
 // from the pole, through r faces): 2 pi A_phi = Psi at every node; then B^phi on the phi faces.
-void axisymmetric_block(const Block& b, const FluxQuadrature& q, const LevelFaces& F, const std::array<Field, 3>& faces) {
+// closure: the largest |Psi at the grid's far end| / sum |flux| of a row with field at its far end
+// that is taken for the data's interpolation error and removed (HandOff::flux_closure_tolerance).
+void axisymmetric_block(const Block& b, const FluxQuadrature& q, const LevelFaces& F, std::int64_t cells_m, double closure,
+                        const std::array<Field, 3>& faces) {
   const bool cyl = b.coordinates == CoordinateSystem::cylindrical;
   const int m = cyl ? 0 : 1, d = cyl ? 1 : 0;
   const auto um = static_cast<std::size_t>(m), ud = static_cast<std::size_t>(d);
   const std::int64_t first = b.index[um] * b.n[um];
   EdgeTable t(b);
   const double phi_lo = b.face_coordinate(2, 0), phi_hi = b.face_coordinate(2, 1);
+  std::vector<double> psi(static_cast<std::size_t>(cells_m + 1)), weight(static_cast<std::size_t>(cells_m + 1));
   for (int fd = 0; fd <= b.n[ud]; ++fd) {
     const double xd = b.face_coordinate(d, fd);
-    double psi = 0;  // flux through the d face from the axis to the current node
-    for (std::int64_t g = 0; g <= first + b.n[um]; ++g) {
-      if (g >= first) {
-        const int fm = static_cast<int>(g - first);
-        t(2, cyl ? fm : fd, cyl ? fd : fm, 0) = psi;
-      }
-      if (g == first + b.n[um]) break;
+    // Psi and the cumulative |flux| at every node of the row, from the axis to the grid's far end.
+    psi[0] = weight[0] = 0;
+    double last = 0;  // the flux through the row's last face
+    for (std::int64_t g = 0; g < cells_m; ++g) {
       Point3 lo{}, hi{};
       lo[um] = F(m, g), hi[um] = F(m, g + 1), lo[2] = phi_lo, hi[2] = phi_hi;
-      psi += q.flux(d, xd, lo, hi);
+      const double f = q.flux(d, xd, lo, hi);
+      const auto u = static_cast<std::size_t>(g);
+      psi[u + 1] = psi[u] + f, weight[u + 1] = weight[u] + std::abs(f), last = f;
+    }
+    // A field that closes inside the grid (none at the row's far end, or a net flux below
+    // closure of the row's |flux|) has Psi = 0 there; what is left is the interpolation error of
+    // the data: removed in proportion to |flux| (so nothing is added where the data have no field).
+    const double total = weight.back(), leak = psi.back();
+    const bool close = total > 0 && (last == 0.0 || std::abs(leak) <= closure * total);
+    for (int fm = 0; fm <= b.n[um]; ++fm) {
+      const auto u = static_cast<std::size_t>(first + fm);
+      t(2, cyl ? fm : fd, cyl ? fd : fm, 0) = close ? psi[u] - leak * (weight[u] / total) : psi[u];
     }
   }
   hydrobase::set_faces_from_edges(b, hydrobase::EdgeIntegrals(b, table_potential(b, t), 1), faces);
@@ -227,6 +239,8 @@ void import_magnetic_field(Context& ctx, const HandOffState& st) {
     throw RunError("HandOff: importing the data's magnetic field onto a 3D " + t.describe() +
                    " is not implemented (Grid::coordinates = cartesian for 3D, or Grid::dimension = 2)");
   const auto xmin = ctx.param<std::vector<double>>("Grid", "xmin");
+  const auto xmax = ctx.param<std::vector<double>>("Grid", "xmax");
+  const double closure = ctx.param<double>("HandOff", "flux_closure_tolerance");
   if (data && t.averages_over_phi() && xmin[t.coordinates == CoordinateSystem::cylindrical ? 0 : 1] != 0.0)
     throw RunError("HandOff: the data's magnetic field is imported through the poloidal flux function from the axis: "
                    "the 2D grid must start at the axis (Grid::xmin = " + std::to_string(xmin[0]) + ", " + std::to_string(xmin[1]) + ")");
@@ -243,7 +257,9 @@ void import_magnetic_field(Context& ctx, const HandOffState& st) {
       for (std::size_t d = 0; d < 3; ++d) F.domain_lo[d] = xmin[d], F.dx[d] = b->dx[d];
       if (t.averages_over_phi()) {
         F.domain_lo[2] = b->face_coordinate(2, 0);
-        axisymmetric_block(*b, *q, F, faces);
+        const int m = t.coordinates == CoordinateSystem::cylindrical ? 0 : 1;
+        const auto cells = static_cast<std::int64_t>(std::llround((xmax[static_cast<std::size_t>(m)] - xmin[static_cast<std::size_t>(m)]) / b->dx[static_cast<std::size_t>(m)]));
+        axisymmetric_block(*b, *q, F, cells, closure, faces);
       } else {
         cartesian_block(*b, *q, F, faces);
       }
