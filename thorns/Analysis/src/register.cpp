@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "Analysis/magnetic_diagnostics.hpp"
+#include "Analysis/rotation_magnetic.hpp"
 #include "Analysis/star_diagnostics.hpp"
 #include "remnant/registrar.hpp"
 #include "remnant/tsv_file.hpp"
@@ -25,6 +26,7 @@ void star(Context& ctx) {
     const auto& m = ctx.service<MagneticDiagnostics>("Analysis::magnetic");
     if (m.iteration != d.iteration) throw RunError("Analysis: magnetic diagnostics missing for this iteration");
     d.magnetic = m;
+    if (d.has_rotation) add_magnetic_terms(d.rotation, ctx.service<double>("Analysis::rotation_magnetic_now"), m.E_mag);
   }
   if (ctx.rank() == 0) {
     const std::string path = ctx.out_dir() + "/analysis.tsv";
@@ -34,6 +36,12 @@ void star(Context& ctx) {
     if (!out) throw RunError("Analysis: cannot write " + path);
   }
   history.rows.push_back(d);
+}
+
+// Runs before Analysis_Star (magnetised runs): the field's Komar term for that row's rotation columns.
+void rotation_magnetic(Context& ctx) {
+  if (!ctx.has_service("Analysis::rotation_magnetic_now")) ctx.publish("Analysis::rotation_magnetic_now", std::make_shared<double>(0.0));
+  ctx.service<double>("Analysis::rotation_magnetic_now") = magnetic_komar_stress(ctx);
 }
 
 // Runs before Analysis_Star on the same iterations; its values go into that row (star_diagnostics).
@@ -49,4 +57,5 @@ REMNANT_REGISTER_THORN(Analysis) {
   reg.function("Analysis_Magnetic", remnant::analysis::magnetic);
   reg.function("Analysis_Star", remnant::analysis::star);
   reg.function("Analysis_Rotation", remnant::analysis::rotation);
+  reg.function("Analysis_RotationMagnetic", remnant::analysis::rotation_magnetic);
 }

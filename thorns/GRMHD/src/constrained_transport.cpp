@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "GRMHD/reconstruction.hpp"
+#include "HydroBase/magnetic_field.hpp"
 #include "groups.hpp"
 #include "remnant/cell_geometry.hpp"
 
@@ -33,17 +34,41 @@ inline void edge_states(double qm2, double qm1, double q0, double qp1, double& l
 }
 
 // One direction's part -/+ HLL_a(vt^a B^b) of an edge: the two a-faces adjacent along b (ct_a at
-// offsets oa - sb and oa), and B^b of the b-face through the edge reconstructed along a.
-inline double upwind_part(const Strided* ct, std::ptrdiff_t oa, std::ptrdiff_t sb, const Strided& bf, std::ptrdiff_t ob,
-                          std::ptrdiff_t sa) {
+// offsets oa - sb and oa), and B^b of the b-face through the edge reconstructed along a from the
+// face values q[-2..1] of the cells a-2 .. a+1.
+inline double upwind_part(const Strided* ct, std::ptrdiff_t oa, std::ptrdiff_t sb, const double* q) {
   const std::ptrdiff_t lo = oa - sb;
   const double ap = std::max(ct[kAlphaPlus][lo], ct[kAlphaPlus][oa]);
   const double am = std::max(ct[kAlphaMinus][lo], ct[kAlphaMinus][oa]);
   const double vl = 0.5 * (ct[kVtLeft][lo] + ct[kVtLeft][oa]);
   const double vh = 0.5 * (ct[kVtRight][lo] + ct[kVtRight][oa]);
   double bl, bh;
-  edge_states(bf[ob - 2 * sa], bf[ob - sa], bf[ob], bf[ob + sa], bl, bh);
+  edge_states(q[0], q[1], q[2], q[3], bl, bh);
   return hll_product(ap, am, vl, vh, bl, bh);
+}
+
+// The four face values of the faces normal to b through cells a-2 .. a+1 of the edge at id (b-face
+// index id[b]). Curvilinear: as orthonormal face means (orthonormal_factor of each face's cell
+// extent), smooth through the axis and the origin, then divided by the signed scale factor h_b at
+// the edge, so that the upwind dissipation sees no spurious jumps of the coordinate components
+// (B^theta ~ 1/r near the origin); zero on the axis and at the origin (h_b = 0, zero-length edges).
+inline void face_values_along(const Block& blk, const Strided& bf, int a, int b, const int* id, bool curvilinear,
+                              double* q) {
+  const std::ptrdiff_t o = bf.at(id), sa = bf.stride(a);
+  for (int m = 0; m < 4; ++m) q[m] = bf[o + (m - 2) * sa];
+  if (!curvilinear) return;
+  int cell[3] = {id[0], id[1], id[2]};
+  Point3 x{};
+  for (int d = 0; d < 3; ++d) x[d] = d == a || d == b ? blk.face_coordinate(d, id[d]) : blk.x(d, id[d]);
+  const double h = blk.coordinates == CoordinateSystem::cylindrical ? (b == 2 ? x[0] : 1.0)
+                   : b == 0                                         ? 1.0
+                   : b == 1                                         ? x[0]
+                                                                    : x[0] * std::sin(x[1]);
+  const double ih = h != 0 ? 1.0 / h : 0.0;
+  for (int m = 0; m < 4; ++m) {
+    cell[a] = id[a] + m - 2;
+    q[m] *= hydrobase::orthonormal_factor(blk, b, cell) * ih;
+  }
 }
 
 }  // namespace
@@ -51,6 +76,7 @@ inline double upwind_part(const Strided* ct, std::ptrdiff_t oa, std::ptrdiff_t s
 void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b) {
   bool used[3];
   for (int d = 0; d < 3; ++d) used[d] = direction_used(b, d);
+  const bool curvilinear = b.coordinates != CoordinateSystem::cartesian;
   for (int c = 0; c < 3; ++c) {
     const int a = (c + 1) % 3, bb = (c + 2) % 3;  // (a, bb, c) cyclic: E_c = vt^bb B^a - vt^a B^bb
     const Strided e{b.field(g.emf[c], 0)};
@@ -74,8 +100,10 @@ void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b) {
           if (used[a] && used[bb]) {
             const std::ptrdiff_t oa = cta[0].at(id), ob = ctb[0].at(id);
             if (scheme == EmfScheme::uct_hll) {
-              emf = -upwind_part(cta, oa, cta[0].stride(bb), Bb, Bb.at(id), Bb.stride(a)) +
-                    upwind_part(ctb, ob, ctb[0].stride(a), Ba, Ba.at(id), Ba.stride(bb));
+              double qb[4], qa[4];
+              face_values_along(b, Bb, a, bb, id, curvilinear, qb);
+              face_values_along(b, Ba, bb, a, id, curvilinear, qa);
+              emf = -upwind_part(cta, oa, cta[0].stride(bb), qb) + upwind_part(ctb, ob, ctb[0].stride(a), qa);
             } else {
               const std::ptrdiff_t sb = cta[0].stride(bb), sa = ctb[0].stride(a);
               emf = 0.25 * (-cta[kFluxNext][oa - sb] - cta[kFluxNext][oa] + ctb[kFluxPrev][ob - sa] + ctb[kFluxPrev][ob]);

@@ -1,6 +1,6 @@
 // Pass 1 of the MHD right-hand side: the hydro sweep of rhs.cpp with the magnetic terms. Along a
-// line in direction d, the transverse cell-centred B^b, B^c (b, c the other two directions) are
-// reconstructed with the fluid variables; the normal B^d at a face is the face field itself
+// line in direction d, the transverse cell-centred B^b, B^c (b, c the other two directions; their
+// orthonormal components in curvilinear coordinates) are reconstructed with the fluid variables; the normal B^d at a face is the face field itself
 // (continuous there, never reconstructed): Bface_d / psi^6. The HLL solve of the nine-component
 // state (valencia_mhd.hpp) gives the hydro fluxes (flux_x/y/z, as for hydro) and the face data the
 // edge EMFs need (ct_x/y/z, see mhd_groups.hpp). The lines cover one ghost layer in the used
@@ -18,6 +18,18 @@
 
 namespace remnant::grmhd {
 namespace {
+
+// The signed scale factors h_c (sqrt f_cc = |h_c|) of the orthonormal components sqrt(f_cc) B^c:
+// signed so that r B^theta, r sin(theta) B^phi, R B^phi continue smoothly into the ghosts across
+// the origin and the axis (negative r, R, theta there).
+Point3 scale_factors(CoordinateSystem cs, const Point3& x, double sin_theta) {
+  switch (cs) {
+    case CoordinateSystem::cartesian: return {1, 1, 1};
+    case CoordinateSystem::cylindrical: return {1, 1, x[0]};
+    case CoordinateSystem::spherical: return {1, x[0], x[0] * sin_theta};
+  }
+  return {1, 1, 1};
+}
 
 // rho, W v^1..3, thermal, Ye, B^b, B^c.
 inline constexpr int kNumRecMhd = 8;
@@ -80,6 +92,17 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           double* out = L.met[c];
           for (int m = -ng; m < n + ng; ++m) out[m] = pm[m * stride];
         }
+        // Curvilinear: reconstruct the orthonormal components sqrt(f_bb) B^b, smooth through the
+        // axis and the origin, not the coordinate components (B^theta ~ 1/r, B^phi ~ 1/R there).
+        if (!cartesian) {
+          int id[3] = {idx[0], idx[1], idx[2]};
+          for (int m = -ng; m < n + ng; ++m) {
+            id[d] = m;
+            const Point3 h = scale_factors(cs, cell_point(b, id[0], id[1], id[2]), trig.sin_centre(id[1]));
+            L.cell[6][m] *= h[next];
+            L.cell[7][m] *= h[prev];
+          }
+        }
       }
       for (int q = 0; q < kNumRecMhd; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
 
@@ -113,6 +136,13 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
         Br[next] = L.right[6][f];
         Bl[prev] = L.left[7][f];
         Br[prev] = L.right[7][f];
+        if (!cartesian) {
+          // Back to coordinate components; on a face on the axis or at the origin (zero factor) the
+          // regular field has no such component.
+          const Point3 h = scale_factors(cs, x, d == 1 ? trig.sin_face(f) : trig.sin_centre(idx[1]));
+          const double in = h[next] != 0 ? 1.0 / h[next] : 0.0, ip = h[prev] != 0 ? 1.0 / h[prev] : 0.0;
+          Bl[next] *= in, Br[next] *= in, Bl[prev] *= ip, Br[prev] *= ip;
+        }
         const MagneticState ml = magnetic_state(sl, pm, Bl[0], Bl[1], Bl[2]);
         const MagneticState mr = magnetic_state(sr, pm, Br[0], Br[1], Br[2]);
         double ul[kNumMhd], ur[kNumMhd], fl[kNumMhd], fr[kNumMhd], fh[kNumMhd];

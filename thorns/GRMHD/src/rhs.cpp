@@ -198,9 +198,10 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
         fs.v2 = fs.v[0] * fs.v_dn[0] + fs.v[1] * fs.v_dn[1] + fs.v[2] * fs.v_dn[2];
         double src[kNumCons];
         double ptot = fs.press;
+        [[maybe_unused]] MagneticState ms;
         if constexpr (Mhd) {
-          const MagneticState ms = magnetic_state(fs, pm, bf[0].origin[o], bf[1].origin[o], bf[2].origin[o]);
-          gravity_sources_mhd(fs, ms, pm, psi, dm, df, cartesian ? nullptr : &gam, shift, src);
+          ms = magnetic_state(fs, pm, bf[0].origin[o], bf[1].origin[o], bf[2].origin[o]);
+          gravity_sources_mhd(fs, ms, pm, psi, dm, df, cartesian ? nullptr : &gam, shift, src, cartesian);
           ptot = total_pressure(fs, ms);
         } else {
           gravity_sources(fs, pm, psi, dm, df, cartesian ? nullptr : &gam, shift, src);
@@ -210,7 +211,14 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
         if (!cartesian) {
           const double ap = alpha * ptot;
           for (int d = 0; d < 3; ++d)
-            if (used[d]) src[kS1 + d] += ap * (ff[d][id[d] + 1] - ff[d][id[d]]) / vw[d][id[d]];
+            if (used[d]) {
+              // (ap * dA) / V, the hydro association: its bits must not change.
+              src[kS1 + d] += ap * (ff[d][id[d] + 1] - ff[d][id[d]]) / vw[d][id[d]];
+              if constexpr (Mhd) {
+                const double log_area = (ff[d][id[d] + 1] - ff[d][id[d]]) / vw[d][id[d]];
+                src[kS1 + d] += magnetic_geometric_source(d, fs, ms, pm, fd, df, log_area);
+              }
+            }
         }
         const double p2 = psi * psi, psi6 = p2 * p2 * p2;
         rhs[kD].origin[o] = out[kD];

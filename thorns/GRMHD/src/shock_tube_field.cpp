@@ -9,6 +9,36 @@
 
 namespace remnant::grmhd {
 
+CovariantPotential uniform_z_potential(CoordinateSystem cs, double b) {
+  switch (cs) {
+    case CoordinateSystem::cartesian:
+      return [b](const Point3& x) { return std::array<double, 3>{-0.5 * b * x[1], 0.5 * b * x[0], 0.0}; };
+    case CoordinateSystem::cylindrical:
+      return [b](const Point3& x) { return std::array<double, 3>{0.0, 0.0, 0.5 * b * x[0] * x[0]}; };
+    case CoordinateSystem::spherical:
+      return [b](const Point3& x) {
+        const double s = std::sin(x[1]);
+        return std::array<double, 3>{0.0, 0.0, 0.5 * b * x[0] * x[0] * s * s};
+      };
+  }
+  return {};
+}
+
+CovariantPotential uniform_x_potential(CoordinateSystem cs, double b) {
+  switch (cs) {
+    case CoordinateSystem::cartesian:
+      return [b](const Point3& x) { return std::array<double, 3>{0.0, 0.0, b * x[1]}; };
+    case CoordinateSystem::cylindrical:  // A_z = b y = b R sin phi
+      return [b](const Point3& x) { return std::array<double, 3>{0.0, b * x[0] * std::sin(x[2]), 0.0}; };
+    case CoordinateSystem::spherical:  // A_z = b y in (r, theta, phi) components
+      return [b](const Point3& x) {
+        const double st = std::sin(x[1]), ct = std::cos(x[1]), sp = std::sin(x[2]);
+        return std::array<double, 3>{b * x[0] * st * sp * ct, -b * x[0] * x[0] * st * st * sp, 0.0};
+      };
+  }
+  return {};
+}
+
 CovariantPotential test_potential(CoordinateSystem cs, double a0) {
   constexpr double k = 2 * std::numbers::pi;
   switch (cs) {
@@ -80,7 +110,10 @@ void shock_tube_field(Context& ctx) {
   const double x0 = ctx.param<double>("GRMHD", "shock_position");
   const double a0 = ctx.param<double>("GRMHD", "field_potential_amplitude");
   const hydrobase::FieldGroups g = hydrobase::FieldGroups::of(ctx);
-  const CovariantPotential A = test_potential(ctx.grid().coordinates(), a0);
+  const std::string& kind = ctx.param<std::string>("GRMHD", "field_potential");
+  const CovariantPotential A = kind == "uniform_z"   ? uniform_z_potential(ctx.grid().coordinates(), a0)
+                               : kind == "uniform_x" ? uniform_x_potential(ctx.grid().coordinates(), a0)
+                                                     : test_potential(ctx.grid().coordinates(), a0);
   for (Block* b : ctx.grid().local_blocks()) {
     for (int a = 0; a < 3; ++a) {
       const Field f = b->field(g.bface[a], 0);

@@ -21,6 +21,11 @@ using CovariantPotential = std::function<std::array<double, 3>(const Point3&)>;
 
 // The test potential above for a coordinate system.
 CovariantPotential test_potential(CoordinateSystem cs, double amplitude);
+// The potential of a uniform field B^z = b along the Cartesian z axis (GRMHD::field_potential =
+// uniform_z): A = b (-y, x, 0)/2, A_phi = b R^2/2 (cylindrical), A_phi = b r^2 sin^2 theta/2 (spherical).
+CovariantPotential uniform_z_potential(CoordinateSystem cs, double b);
+// A uniform field B^x = b (uniform_x): A_z = b y in every coordinate system's components.
+CovariantPotential uniform_x_potential(CoordinateSystem cs, double b);
 
 // Adds to Bface1..3 (groups bface) of the interior faces the face fluxes / area of potential A; with
 // ghost_layers > 0 also to that many layers of ghost faces in the used directions.

@@ -1,5 +1,7 @@
 #include "HydroBase/magnetic_field.hpp"
 
+#include <cmath>
+
 #include "remnant/cell_geometry.hpp"
 #include "remnant/vars/Spacetime.hpp"
 
@@ -18,8 +20,28 @@ FieldGroups FieldGroups::of(const Context& ctx) {
   return g;
 }
 
+double orthonormal_factor(const Block& b, int c, const int* id) {
+  auto width = [&](int e) { return b.face_coordinate(e, id[e] + 1) - b.face_coordinate(e, id[e]); };
+  auto half_square_step = [&](int e) {
+    const double lo = b.face_coordinate(e, id[e]), hi = b.face_coordinate(e, id[e] + 1);
+    return 0.5 * (hi * hi - lo * lo);
+  };
+  switch (b.coordinates) {
+    case CoordinateSystem::cartesian: return 1.0;
+    case CoordinateSystem::cylindrical:  // (R, z, phi)
+      return c == 2 ? b.volume_weight(0, id[0]) / width(0) : 1.0;
+    case CoordinateSystem::spherical: {  // (r, theta, phi)
+      if (c == 0) return 1.0;
+      const double radial = b.volume_weight(0, id[0]) / half_square_step(0);
+      return c == 1 ? radial : radial * b.volume_weight(1, id[1]) / width(1);
+    }
+  }
+  return 1.0;
+}
+
 void cell_centred_field(const FieldGroups& g, Block& b) {
   const Field psi = b.field(g.metric, vars::Spacetime::metric::idx::psi);
+  const bool curvilinear = b.coordinates != CoordinateSystem::cartesian;
   for (int a = 0; a < 3; ++a) {
     const bool used = direction_used(b, a);
     const Field bf = b.field(g.bface[a], 0);
@@ -35,7 +57,13 @@ void cell_centred_field(const FieldGroups& g, Block& b) {
       const double lo = bf(i, j, k), hi = bf(up[0], up[1], up[2]);
       const double am = b.face_area(a, i, j, k), ap = b.face_area(a, up[0], up[1], up[2]);
       const double w = am + ap;
-      out(i, j, k) = (w > 0 ? (am * lo + ap * hi) / w : 0.5 * (lo + hi)) * ipsi6;
+      double mean = w > 0 ? (am * lo + ap * hi) / w : 0.5 * (lo + hi);
+      if (curvilinear && a > 0) {
+        const int id[3] = {i, j, k};
+        const Point3 f = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k));
+        mean *= orthonormal_factor(b, a, id) / std::sqrt(f[a]);
+      }
+      out(i, j, k) = mean * ipsi6;
     });
   }
 }

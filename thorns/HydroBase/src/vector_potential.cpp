@@ -83,22 +83,6 @@ CovariantPotential covariant_from_phi_component(CoordinateSystem c, std::functio
   return [f = std::move(a_phi)](const Point3& x) -> std::array<double, 3> { return {0.0, 0.0, f(x)}; };
 }
 
-Point3 cell_centred_densitised_field(const Block& b, const std::array<Field, 3>& faces, int i, int j, int k) {
-  Point3 B{};
-  for (int d = 0; d < 3; ++d) {
-    const Field& F = faces[static_cast<std::size_t>(d)];
-    if (!direction_used(b, d)) {
-      B[static_cast<std::size_t>(d)] = F(i, j, k);
-      continue;
-    }
-    const int ip = i + (d == 0), jp = j + (d == 1), kp = k + (d == 2);
-    const double a_lo = b.face_area(d, i, j, k), a_hi = b.face_area(d, ip, jp, kp);
-    const double sum = a_lo + a_hi;
-    B[static_cast<std::size_t>(d)] = sum > 0.0 ? (a_lo * F(i, j, k) + a_hi * F(ip, jp, kp)) / sum : 0.5 * (F(i, j, k) + F(ip, jp, kp));
-  }
-  return B;
-}
-
 double face_orthonormal_area(const Block& b, int d, int i, int j, int k) {
   const int idx[3] = {i, j, k};
   // Coordinate length of the face along e (the unit/full-range conventions of unused directions).

@@ -9,6 +9,7 @@
 
 #include "EOS/eos.hpp"
 #include "RotatingStar/eos_slice.hpp"
+#include "check_field.hpp"
 #include "RotatingStar/report.hpp"
 #include "RotatingStar/rns_solver.hpp"
 #include "remnant/cell_geometry.hpp"
@@ -63,6 +64,8 @@ RnsParameters read_parameters(const Context& ctx) {
   p.lmax = integer("lmax");
   p.r_out_factor = real("r_out_factor");
   p.tolerance = real("tolerance");
+  p.field.K_m = real("K_m");
+  p.field.m = real("m");
   return p;
 }
 
@@ -80,7 +83,7 @@ std::string exact(double v) {
 const RotatingStarModel& model_for(const Context& ctx) {
   static std::map<std::string, Cached> cache;  // key: the resolved parameters of this thorn
   std::string key = ctx.param<std::string>("RotatingStar", "eos_slice") + ctx.param<std::string>("RotatingStar", "rotation_law");
-  for (const char* n : {"poly_K", "poly_gamma", "ye", "slice_T", "rho_central", "omega", "axis_ratio", "A2", "r_out_factor", "tolerance"})
+  for (const char* n : {"poly_K", "poly_gamma", "ye", "slice_T", "rho_central", "omega", "axis_ratio", "A2", "r_out_factor", "tolerance", "K_m", "m"})
     key += " " + exact(ctx.param<double>("RotatingStar", n));
   for (const char* n : {"nr", "n_theta", "lmax"}) key += " " + std::to_string(ctx.param<std::int64_t>("RotatingStar", n));
   for (const char* n : {"pwp_gammas", "pwp_rho_bounds"})
@@ -171,4 +174,7 @@ void initial(Context& ctx) {
 }  // namespace
 }  // namespace remnant::rotstar
 
-REMNANT_REGISTER_THORN(RotatingStar) { reg.function("RotatingStar_Initial", remnant::rotstar::initial); }
+REMNANT_REGISTER_THORN(RotatingStar) {
+  reg.function("RotatingStar_CheckParameters", remnant::rotstar::check_field_parameters);
+  reg.function("RotatingStar_Initial", remnant::rotstar::initial);
+}

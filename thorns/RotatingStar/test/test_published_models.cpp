@@ -12,6 +12,13 @@
 // XNS cell. The tool example (--omega=0.02633) is this model; the fixed-Omega iteration
 // diverged on it before the Omega ramp became linear in Omega^2 and the axis-ratio fallback existed.
 //
+// The same repository's documentation/examples/GR/NonRotMagToroPol2/LogFile.dat is a static star
+// with a purely toroidal field of the Kiuchi & Yoshida law: K = 110, Gamma = 2, rho_c = 1.366e-3,
+// BCOEF = K_m = 3.746, MAGIND = m = 1 (NR = 900 with 600 uniform cells to r = 13, dr = 0.0217;
+// 100 cells in theta). It fixes the conventions: B in Heaviside-Lorentz units with sqrt(4 pi)
+// absorbed (BMAX 7.3456e-3 = 6.1346e17 G, i.e. 8.351e19 G per code unit), the magnetic energy
+// H = int B^2/2 psi^6 dV, and |W| = M_proper + T + H - M_Komar (its MENERGY RATIO 0.20197 = H/|W|).
+//
 // RNS (Stergioulas & Friedman 1995; github.com/cgca/rns, source/rns.v2.0/sample.out, example 2a,
 // the check against Cook, Shapiro & Teukolsky 1994, ApJ 422, 227, Table 3): the full-GR sequence of
 // an N = 1 polytrope at central energy density e_c = 0.137 in polytropic units (K = 1), from
@@ -61,6 +68,40 @@ TEST(PublishedModels, XnsBu8UniformRotation) {
     EXPECT_LT(std::abs(rel), r.rel_tol) << r.name;
   }
   EXPECT_DOUBLE_EQ(g.omega_c, 0.02633);
+  EXPECT_LT(g.grv3, 1e-5);
+}
+
+// XNS's magnetised static star (see the top): masses 5e-4, H 5e-4, H/|W| 1.1e-3, r_p/r_e 1.2e-3 and
+// B_max 1.4e-4 apart, the level of the unmagnetised BU8 comparison above.
+TEST(PublishedModels, XnsToroidalMagnetisedStaticStar) {
+  const auto slice = remnant::tov::polytrope_slice(110.0, 2.0, 0.5);
+  RnsParameters p;
+  p.rho_central = 1.366e-3;
+  p.field.K_m = 3.746;
+  p.field.m = 1;
+  const RotatingStarModel m(*slice, p);
+  const RnsGlobals& g = m.globals();
+  // XNS LogFile.dat: KOMAR MASS, REST MASS, PROPER MASS, MAGNET. ENERGY, MENERGY RATIO, EQUATORIAL
+  // RADIUS, RADIUS RATIO (r_p/r_e: prolate), CIRC RADIUS, BMAX.
+  const double xns_re = 12.144166666666667;
+  const Published rows[] = {
+      {"M (Komar)", 1.5972841142023642, g.M_komar, 1e-3},
+      {"M_0", 1.6806053347436054, g.M_rest, 1e-3},
+      {"M_proper", 1.7603540566721834, g.M_proper, 1e-3},
+      {"H", 4.1271482954508332e-2, g.H_mag, 1.5e-3},
+      {"H/|W|", 0.20197315776184657, g.H_over_W, 3e-3},
+      {"r_p/r_e", 1.1376415967549687, g.axis_ratio, 3e-3},
+      {"R_circ", 13.723120418621335, g.R_circ, 2e-3},
+      {"r_e", xns_re, g.r_e, 0.03 / xns_re},  // about one XNS cell (0.0217)
+      {"B_max", 7.3456117313218314e-3, g.B_max, 1e-3},
+  };
+  for (const Published& r : rows) {
+    const double rel = r.ours / r.value - 1;
+    std::printf("%-10s XNS %.7g  ours %.7g  relative %+.2e (tolerance %.1e)\n", r.name, r.value, r.ours, rel, r.rel_tol);
+    EXPECT_LT(std::abs(rel), r.rel_tol) << r.name;
+  }
+  EXPECT_EQ(g.J, 0.0);
+  EXPECT_LT(g.grv2, 1e-4);
   EXPECT_LT(g.grv3, 1e-5);
 }
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "HydroBase/magnetic_field.hpp"
 #include "HydroBase/magnetic_units.hpp"
 #include "HydroBase/vector_potential.hpp"
 #include "check_parameters.hpp"
@@ -155,16 +156,9 @@ void initial(Context& ctx) {
                   tor.K_m, tor.m, tor.rho_cut);
     ctx.info(line);
   }
-  // Cell-centred B^i = (area-weighted face means) / psi^6.
-  for (Block* b : grid.local_blocks()) {
-    const auto F = groups.faces(*b);
-    const Field psi = Metric(ctx, *b).field(Metric::idx::psi);
-    for_interior(*b, [&](int i, int j, int k) {
-      const Point3 B = hydrobase::cell_centred_densitised_field(*b, F, i, j, k);
-      const double psi6 = std::pow(psi(i, j, k), 6);
-      for (int d = 0; d < 3; ++d) b->field(groups.bvec, d)(i, j, k) = B[static_cast<std::size_t>(d)] / psi6;
-    });
-  }
+  // Bvec as HydroBase defines it (area-weighted face means / psi^6).
+  const hydrobase::FieldGroups field_groups = hydrobase::FieldGroups::of(ctx);
+  for (Block* b : grid.local_blocks()) hydrobase::cell_centred_field(field_groups, *b);
   const double b_max = max_field_strength(ctx, groups);
   const Parameters& p = ctx.params();
   const double rho_floor = p.find("Atmosphere", "rho_thr") ? ctx.param<double>("Atmosphere", "rho_thr") : 0.0;

@@ -23,7 +23,7 @@ struct StarDiagnostics {
   double outflow = 0, atmosphere_source = 0, mass_budget = 0;
   bool has_rotation = false;  // Analysis::rotation: the columns of `rotation` follow mass_budget
   RotationDiagnostics rotation;
-  // Runs with evolved B only (the extra columns).
+  // Runs with evolved B only (the extra columns, after the rotation ones).
   std::optional<MagneticDiagnostics> magnetic;
 };
 
@@ -33,8 +33,8 @@ struct History {
 
 // Collective over the grid's ranks; every rank gets the same values.
 StarDiagnostics star_diagnostics(Context& ctx);
-// The columns of every run, then those of Analysis::rotation (J ... mode_m2), then with evolved B
-// divB_max, E_mag, E_mag_pol, E_mag_tor, B_max.
+// The columns of a hydro run, then J .. mode_m2 with rotation, then divB_max, E_mag, E_mag_pol,
+// E_mag_tor, B_max with magnetic.
 std::string tsv_header(bool rotation, bool magnetic = false);
 std::string tsv_line(const StarDiagnostics& d);
 

@@ -19,10 +19,13 @@ namespace remnant::grmhd {
 // The total pressure p + b^2 / 2 (what the caller's pressure part of the geometric source takes).
 inline double total_pressure(const FluidState& s, const MagneticState& g) { return s.press + 0.5 * g.b2; }
 
-// src has kNumCons entries; src[kD] = src[kDYe] = 0.
+// src has kNumCons entries; src[kD] = src[kDYe] = 0. point_magnetic_geometry = false leaves out the
+// magnetic part of the geometric source, -(alpha/2) psi^4 sum_j (bs^j)^2 d_i f_jj, for a caller that
+// adds it with exact cell averages (magnetic_geometric_source below).
 inline void gravity_sources_mhd(const FluidState& s, const MagneticState& g, const PointMetric& m, double psi,
                                 const MetricDerivatives& dm, const std::array<std::array<double, 3>, 3>& df,
-                                const Christoffels* gamma, bool with_shift, double* src) {
+                                const Christoffels* gamma, bool with_shift, double* src,
+                                bool point_magnetic_geometry = true) {
   const double W2 = s.W * s.W;
   const double z = s.rho * s.h * W2;
   const double zt = z + g.b2 * W2;                    // (rho h + b^2) W^2
@@ -42,7 +45,7 @@ inline void gravity_sources_mhd(const FluidState& s, const MagneticState& g, con
   const double two_a_trace_over_psi = 2.0 * m.alpha * trace / psi;
   const double half_a_psi4 = 0.5 * m.alpha * m.psi4;
   double diag[3];
-  for (int j = 0; j < 3; ++j) diag[j] = zt * s.v[j] * s.v[j] - bs[j] * bs[j];
+  for (int j = 0; j < 3; ++j) diag[j] = zt * s.v[j] * s.v[j] - (point_magnetic_geometry ? bs[j] * bs[j] : 0.0);
   src[kD] = 0;
   src[kDYe] = 0;
   double tau = 0;
@@ -72,6 +75,26 @@ inline void gravity_sources_mhd(const FluidState& s, const MagneticState& g, con
     tau += zt * (vvk - s.v2 * div / 3.0) - (bbk - bs2 * div / 3.0);
   }
   src[kTau] = tau;
+}
+
+// The magnetic part of the geometric source of S_i, -alpha sum_j gamma_jj (bs^j)^2 d_i ln sqrt f_jj,
+// with d_i ln sqrt f_jj replaced by its share of `log_area_derivative`, the exact cell average of
+// d_i ln sqrt f ((A+ - A-)/V of the cell): the share of direction j is (d_i f_jj / f_jj) / sum_k (d_i f_kk / f_kk)
+// at the centroid (1/2 each for theta and phi in spherical r, otherwise 1 or 0). As for the pressure,
+// this keeps the singular 1/r, cot(theta) factors consistent with the face-area flux divergence at
+// the axis and the origin, where the point values leave an O(1/dx) imbalance in the first cell.
+inline double magnetic_geometric_source(int i, const FluidState& s, const MagneticState& g, const PointMetric& m,
+                                        const std::array<double, 3>& f, const std::array<std::array<double, 3>, 3>& df,
+                                        double log_area_derivative) {
+  double sum = 0, weighted = 0;
+  const std::array<double, 3> bs = spatial_b(s, g);
+  for (int j = 0; j < 3; ++j) {
+    const double l = df[i][j] / f[j];
+    sum += l;
+    weighted += m.g_dn[j] * bs[j] * bs[j] * l;
+  }
+  if (sum == 0) return 0.0;
+  return -m.alpha * log_area_derivative * weighted / sum;
 }
 
 // The trace S = S^j_j of the xCFC matter sources: S_i v^i + 3 p + b^2 / 2 (with S_i the conserved

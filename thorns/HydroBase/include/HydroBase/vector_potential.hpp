@@ -76,15 +76,12 @@ inline void set_faces_from_potential(const Block& b, const CovariantPotential& A
 double cell_divergence(const Block& b, const std::array<Field, 3>& faces, int i, int j, int k,
                        double* magnitude = nullptr);
 
-// psi^6 B^i at the centre of cell (i, j, k): per direction the area-weighted mean of the cell's two
-// faces (the one stored face of an unused direction); divide by psi^6 for B^i.
-Point3 cell_centred_densitised_field(const Block& b, const std::array<Field, 3>& faces, int i, int j, int k);
-
-// The same in the orthonormal frame of f: per direction the mean of the two faces' averages of
-// sqrt(f_dd) psi^6 B^d (flux / the face's integral of sqrt(f / f_dd)), so that
-// |B| = psi^2 |result| / psi^6. Unlike the area-weighted coordinate mean it stays accurate next to
-// the origin and the axis, where coordinate components such as B^theta ~ 1/r vary fastest (for a
-// uniform field on 16^2 spherical cells the area-weighted mean is 12 % off |B| there, this 2 %).
+// psi^6 B at the centre of cell (i, j, k) in the orthonormal frame of f: per direction the mean of
+// the two faces' averages of sqrt(f_dd) psi^6 B^d (flux / the face's integral of sqrt(f / f_dd)),
+// so that |B| = psi^2 |result| / psi^6. Unlike the area-weighted coordinate mean of Bvec
+// (HydroBase/magnetic_field.hpp) it stays accurate next to the origin and the axis, where
+// coordinate components such as B^theta ~ 1/r vary fastest (for a uniform field on 16^2 spherical
+// cells the area-weighted mean is 12 % off |B| there, this 2 %).
 Point3 cell_orthonormal_densitised_field(const Block& b, const std::array<Field, 3>& faces, int i, int j, int k);
 // The integral of sqrt(f / f_dd) over the lower face of cell (i, j, k) normal to d.
 double face_orthonormal_area(const Block& b, int d, int i, int j, int k);
