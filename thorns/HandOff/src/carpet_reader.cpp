@@ -223,7 +223,7 @@ SourceData read_carpet(const CarpetOptions& opt) {
   }
 
   // Read the components and build the levels.
-  LevelBuilder builder(refl, opt.buffer_zones);
+  LevelBuilder builder(refl, opt.buffer_zones, opt.axial_magnetic_field);
   SourceData out;
   out.format = "carpet";
   out.iteration = it;

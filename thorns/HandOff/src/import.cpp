@@ -19,6 +19,10 @@
 #include "remnant/vars/HandOff.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
+#include "HydroBase/magnetic_field.hpp"
+#include "HydroBase/vector_potential.hpp"
+#include "magnetic_import.hpp"
+#include "magnetic_source.hpp"
 #include "source_integrals.hpp"
 #include "source_quantities.hpp"
 
@@ -31,7 +35,9 @@ std::string num(double x) {
   return b;
 }
 
-Totals totals(const Integrals& i) { return {i.rest_mass, i.angular_momentum, i.energy}; }
+Totals totals(const Integrals& i) {
+  return {i.rest_mass, i.angular_momentum, i.energy, i.magnetic_energy, i.magnetic_energy_toroidal};
+}
 
 HandOffState& state(Context& ctx) {
   if (!ctx.has_service("HandOff::state")) ctx.publish<HandOffState>("HandOff::state", std::make_shared<HandOffState>());
@@ -215,7 +221,7 @@ void initial(Context& ctx) {
     });
   }
   MPI_Allreduce(sums, total, 3, MPI_DOUBLE, MPI_SUM, ctx.comm());
-  r.imported = {total[0], total[1], total[2]};
+  r.imported.rest_mass = total[0], r.imported.angular_momentum = total[1], r.imported.energy = total[2];
   ctx.info("HandOff: " + std::to_string(r.cells) + " cells, " + std::to_string(r.cells_without_data) + " without data, " +
            std::to_string(r.cells_partly_covered) + " partly covered; up to " + std::to_string(r.max_phi_samples) +
            " samples per cell; rest mass of the interpolated D " + num(r.raw_rest_mass) + ", 3D rest mass on the grid " +
@@ -238,6 +244,41 @@ void import_conserved(Context& ctx) {
   double total = 0;
   MPI_Allreduce(&atmosphere, &total, 1, MPI_DOUBLE, MPI_SUM, ctx.comm());
   state(ctx).report.atmosphere_initial_mass = total;
+}
+
+void magnetic_field(Context& ctx) {
+  HandOffState& st = state(ctx);
+  import_magnetic_field(ctx, st);
+  auto& r = st.report;
+  r.magnetic = st.source->has("Bt[0]") && !ctx.param<bool>("HandOff", "ignore_magnetic_field");
+  const MagneticEnergy e = grid_magnetic_energy(ctx, false);
+  r.imported.magnetic_energy = e.total, r.imported.magnetic_energy_toroidal = e.toroidal;
+  // The net flux out of a cell against the largest sum of |face flux| of a cell: round-off when
+  // the faces are circulations.
+  const hydrobase::FieldGroups g = hydrobase::FieldGroups::of(ctx);
+  double m[2] = {0, 0};  // max |net flux|, max sum |flux|
+  for (Block* b : ctx.grid().local_blocks()) {
+    const std::array<Field, 3> faces{b->field(g.bface[0], 0), b->field(g.bface[1], 0), b->field(g.bface[2], 0)};
+    for_interior(*b, [&](int i, int j, int k) {
+      double magnitude = 0;
+      const double V = b->cell_volume(i, j, k);
+      const double d = hydrobase::cell_divergence(*b, faces, i, j, k, &magnitude);
+      m[0] = std::max(m[0], std::abs(d) * V), m[1] = std::max(m[1], magnitude * V);
+    });
+  }
+  MPI_Allreduce(MPI_IN_PLACE, m, 2, MPI_DOUBLE, MPI_MAX, ctx.comm());
+  const double div = m[1] > 0 ? m[0] / m[1] : 0.0;
+  r.divB_relative_max = div;
+  if (r.magnetic)
+    ctx.info("HandOff: magnetic field imported: E_mag 3D on the grid " + num(r.source_grid.magnetic_energy) + " (toroidal " +
+             num(r.source_grid.magnetic_energy_toroidal) + "), on the grid's faces " + num(e.total) + " (toroidal " +
+             num(e.toroidal) + "); max |div B| / face fluxes " + num(div));
+}
+
+void magnetic_report(Context& ctx) {
+  auto& r = state(ctx).report;
+  const MagneticEnergy e = grid_magnetic_energy(ctx, true);
+  r.after.magnetic_energy = e.total, r.after.magnetic_energy_toroidal = e.toroidal;
 }
 
 }  // namespace remnant::handoff

@@ -20,7 +20,7 @@ long long lattice_index(double x, double lo, double dx, const std::string& where
 }
 
 // Mirrors a level across x^d = 0: nodes at x^d < 0 take the data of their images times the parity.
-void unfold(SourceLevel& L, int d) {
+void unfold(SourceLevel& L, int d, bool axial_magnetic_field) {
   const auto ud = static_cast<std::size_t>(d);
   const double s2 = 2 * L.origin[ud] / L.delta[ud];
   const long long two_s = std::llround(s2);
@@ -39,7 +39,7 @@ void unfold(SourceLevel& L, int d) {
   U.valid.assign(U.size(), 0);
   for (const auto& [name, v] : L.fields) U.fields[name].assign(U.size(), std::numeric_limits<double>::quiet_NaN());
   std::map<std::string, double> parity;
-  for (const auto& [name, v] : L.fields) parity[name] = reflection_parity(name, d);
+  for (const auto& [name, v] : L.fields) parity[name] = reflection_parity(name, d, axial_magnetic_field);
   for (int k = 0; k < U.n[2]; ++k)
     for (int j = 0; j < U.n[1]; ++j)
       for (int i = 0; i < U.n[0]; ++i) {
@@ -163,7 +163,7 @@ std::vector<SourceLevel> LevelBuilder::build() const {
     }
     crop(L);
     for (int d = 0; d < 3; ++d)
-      if (reflection_[static_cast<std::size_t>(d)]) unfold(L, d);
+      if (reflection_[static_cast<std::size_t>(d)]) unfold(L, d, axial_magnetic_field_);
     levels.push_back(std::move(L));
   }
   return levels;

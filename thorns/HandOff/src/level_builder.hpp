@@ -22,7 +22,8 @@ struct Component {
 
 class LevelBuilder {
  public:
-  LevelBuilder(std::array<bool, 3> reflection, int buffer_zones) : reflection_(reflection), buffer_(buffer_zones) {}
+  LevelBuilder(std::array<bool, 3> reflection, int buffer_zones, bool axial_magnetic_field = false)
+      : reflection_(reflection), buffer_(buffer_zones), axial_magnetic_field_(axial_magnetic_field) {}
   // data: n[0]*n[1]*n[2] values, x fastest.
   void add(const std::string& variable, Component c, std::vector<double> data);
   std::vector<SourceLevel> build() const;
@@ -34,6 +35,7 @@ class LevelBuilder {
   };
   std::array<bool, 3> reflection_;
   int buffer_;
+  bool axial_magnetic_field_;  // Bvec's parity across mirrors (reflection_parity)
   std::map<int, std::map<std::string, std::vector<Piece>>> pieces_;  // level -> variable -> components
 };
 

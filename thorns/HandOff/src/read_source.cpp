@@ -6,6 +6,8 @@
 #include "EOS/eos.hpp"
 #include "HandOff/carpet_reader.hpp"
 #include "HandOff/remnant_reader.hpp"
+#include "HydroBase/magnetic_field.hpp"
+#include "magnetic_source.hpp"
 #include "source_quantities.hpp"
 
 namespace remnant::handoff {
@@ -21,20 +23,21 @@ void check_magnetic_field(const Context& ctx, SourceData& src, std::vector<std::
       for (std::size_t q = 0; q < L.size(); ++q)
         if (L.valid[q]) bmax = std::max(bmax, std::abs(it->second[q]));
     }
+  const bool evolved = hydrobase::magnetic_field_evolved(ctx);
+  if (evolved && !ctx.param<bool>("HandOff", "ignore_magnetic_field")) {
+    if (!has_magnetic_field(src) && bmax > 0)
+      throw RunError("HandOff: the data hold only some components of HydroBase::Bvec; all three are needed");
+    if (!has_magnetic_field(src))
+      notes.push_back("no HydroBase::Bvec[0..2] in the data: the run's magnetic field starts from zero");
+    return;  // imported (magnetic_import.hpp)
+  }
   if (bmax > 0 && !ctx.param<bool>("HandOff", "ignore_magnetic_field")) {
     std::string file = "the data";
     for (int c = 2; c >= 0; --c)
       if (src.file_of.count("Bvec[" + std::to_string(c) + "]")) file = src.file_of.at("Bvec[" + std::to_string(c) + "]");
-    // A face-centred group is a staggered magnetic field (constrained transport).
-    std::string evolved;
-    for (const auto& g : ctx.vars().groups())
-      if (g.centering == Centering::face_x || g.centering == Centering::face_y || g.centering == Centering::face_z)
-        evolved = g.full_name();
     throw RunError("HandOff: " + file + ": the data hold a magnetic field (HydroBase::Bvec, max |B| = " + std::to_string(bmax) +
-                   "), but HandOff does not import magnetic fields yet" +
-                   (evolved.empty() ? std::string(" and this run evolves none")
-                                    : " (this run evolves one, " + evolved + ", which would start from zero)") +
-                   "; set HandOff::ignore_magnetic_field = true to hand off the fluid alone");
+                   "), but this run evolves none (HydroBase::magnetic_field = none): set HydroBase::magnetic_field = "
+                   "evolved to import it, or HandOff::ignore_magnetic_field = true to hand off the fluid alone");
   }
   if (bmax > 0) notes.push_back("the data's magnetic field (max |B| = " + std::to_string(bmax) + ") is dropped (HandOff::ignore_magnetic_field)");
   for (auto& L : src.levels)
@@ -46,6 +49,7 @@ void check_magnetic_field(const Context& ctx, SourceData& src, std::vector<std::
 std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::string>& notes) {
   const auto files = expand_file_patterns(ctx.param<std::vector<std::string>>("HandOff", "files"));
   const auto& format = ctx.param<std::string>("HandOff", "format");
+  const auto& parity = ctx.param<std::string>("HandOff", "magnetic_parity");
   auto src = std::make_shared<SourceData>();
   std::array<bool, 3> mirrors{false, false, false};
   for (const auto& r : ctx.param<std::vector<std::string>>("HandOff", "reflection")) mirrors[static_cast<std::size_t>(r[0] - 'x')] = true;
@@ -58,9 +62,10 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
     o.required = {"rho"};
     o.reflection = mirrors;
     o.buffer_zones = static_cast<int>(ctx.param<std::int64_t>("HandOff", "buffer_zones"));
+    o.axial_magnetic_field = parity == "axial_vector";
     *src = read_carpet(o);
   } else {
-    *src = read_remnant_volume(files, mirrors);
+    *src = read_remnant_volume(files, mirrors, parity != "vector");
   }
   check_magnetic_field(ctx, *src, notes);
   MissingPolicy policy;
@@ -70,10 +75,13 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
   src->has_metric = src->has("gxx");
   src->has_lapse = src->has("alp");
   for (auto& n : complete_source(*src, ctx.service<eos::EOS>("eos"), policy)) notes.push_back(std::move(n));
+  const bool magnetic = has_magnetic_field(*src);
+  if (magnetic) add_magnetic_source(*src);
   for (auto& n : add_conserved(*src)) notes.push_back(std::move(n));
   // Only what the hand-off samples stays in memory (every rank holds all the data).
   for (auto& L : src->levels)
-    for (const char* f : {"press", "temperature", "gxx", "gxy", "gxz", "gyy", "gyz", "gzz"}) L.fields.erase(f);
+    for (const char* f : {"press", "temperature", "gxx", "gxy", "gxz", "gyy", "gyz", "gzz", "Bvec[0]", "Bvec[1]", "Bvec[2]"})
+      L.fields.erase(f);
   return src;
 }
 

@@ -7,4 +7,6 @@ REMNANT_REGISTER_THORN(HandOff) {
   reg.function("HandOff_Initial", remnant::handoff::initial);
   reg.function("HandOff_ImportConserved", remnant::handoff::import_conserved);
   reg.function("HandOff_Report", remnant::handoff::report);
+  reg.function("HandOff_MagneticField", remnant::handoff::magnetic_field);
+  reg.function("HandOff_MagneticReport", remnant::handoff::magnetic_report);
 }

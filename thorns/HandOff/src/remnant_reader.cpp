@@ -6,7 +6,7 @@
 
 namespace remnant::handoff {
 
-SourceData read_remnant_volume(const std::vector<std::string>& files, std::array<bool, 3> reflection) {
+SourceData read_remnant_volume(const std::vector<std::string>& files, std::array<bool, 3> reflection, bool axial_magnetic_field) {
   if (files.size() != 1)
     throw RunError("HandOff::format = remnant reads one volume file (grid-volume.it*.h5); HandOff::files names " +
                    std::to_string(files.size()));
@@ -46,8 +46,9 @@ SourceData read_remnant_volume(const std::vector<std::string>& files, std::array
       {"HydroBase-prim.vel1", "vel[0]", true}, {"HydroBase-prim.vel2", "vel[1]", true},   {"HydroBase-prim.vel3", "vel[2]", true},
       {"HydroBase-cons.D", "Dt", true},        {"HydroBase-cons.S1", "St[0]", true},      {"HydroBase-cons.S2", "St[1]", true},
       {"HydroBase-cons.S3", "St[2]", true},    {"HydroBase-cons.tau", "taut", true},      {"HydroBase-cons.DYe", "DYet", true},
-      {"Spacetime-metric.psi", "psi", true},   {"Spacetime-metric.alpha", "alp", false}};
-  LevelBuilder builder(reflection, 0);
+      {"Spacetime-metric.psi", "psi", true},   {"Spacetime-metric.alpha", "alp", false},
+      {"HydroBase-Bvec.B1", "Bvec[0]", false}, {"HydroBase-Bvec.B2", "Bvec[1]", false},  {"HydroBase-Bvec.B3", "Bvec[2]", false}};
+  LevelBuilder builder(reflection, 0, axial_magnetic_field);
   const std::size_t nb = level.size(), per = static_cast<std::size_t>(cells[0] * cells[1] * cells[2]);
   for (const auto& m : maps) {
     if (!h5::exists(data, m.dataset)) {

@@ -49,7 +49,7 @@ void report(Context& ctx) {
   double total[4], rho_max_all = 0;
   MPI_Allreduce(sums, total, 4, MPI_DOUBLE, MPI_SUM, ctx.comm());
   MPI_Allreduce(&rho_max, &rho_max_all, 1, MPI_DOUBLE, MPI_MAX, ctx.comm());
-  r.after = {total[0], total[1], total[2]};
+  r.after.rest_mass = total[0], r.after.angular_momentum = total[1], r.after.energy = total[2];
   r.atmosphere_mass = total[3];
   // psi^4 vs gamma^(1/3) and alpha vs the 3D lapse in fully covered cells inside the matter
   // (rho > 1e-3 rho_max): largest and D-weighted mean relative differences; values at the densest cell.
@@ -123,6 +123,18 @@ void report(Context& ctx) {
     lines.push_back(line("alpha_vs_3d_mean", r.alpha_mean_rel, "D-weighted mean of the same"));
     lines.push_back(line("alpha_centre", r.alpha_c, "alpha at the densest cell"));
     lines.push_back(line("alpha_3d_centre", r.alpha3d_c, "3D lapse there"));
+  }
+  if (r.magnetic) {
+    const auto ratio = [](double a, double b) { return b != 0 ? a / b - 1 : 0.0; };
+    lines.push_back(line("source_magnetic_energy", r.source_all.magnetic_energy, "3D: (1/2) sum sqrt(gamma) B^2 dV, all data"));
+    lines.push_back(line("source_magnetic_energy_grid", r.source_grid.magnetic_energy, "3D inside the grid"));
+    lines.push_back(line("source_magnetic_energy_tor_grid", r.source_grid.magnetic_energy_toroidal, "3D toroidal part (B_phi-hat^2) inside the grid"));
+    lines.push_back(line("imported_magnetic_energy", r.imported.magnetic_energy, "grid: the imported faces with the 3D gamma^(1/3)"));
+    lines.push_back(line("imported_magnetic_energy_tor", r.imported.magnetic_energy_toroidal, "grid: toroidal part"));
+    lines.push_back(line("magnetic_energy", r.after.magnetic_energy, "grid with the solved psi"));
+    lines.push_back(line("magnetic_energy_tor", r.after.magnetic_energy_toroidal, "grid with the solved psi: toroidal part"));
+    lines.push_back(line("magnetic_energy_change", ratio(r.imported.magnetic_energy, r.source_grid.magnetic_energy), "imported / 3D on the grid - 1"));
+    lines.push_back(line("divB_relative_max", r.divB_relative_max, "max over cells |net flux| / max over cells sum |face flux|"));
   }
   for (const auto& l : lines) ctx.info("HandOff: " + l);
   write_profiles(ctx, ctx.out_dir() + "/handoff_profiles.tsv");

@@ -2,7 +2,7 @@
 
 namespace remnant::handoff {
 
-double reflection_parity(const std::string& v, int d) {
+double reflection_parity(const std::string& v, int d, bool axial_magnetic_field) {
   const char axis = static_cast<char>('x' + d);
   auto vector_index = [&](const std::string& prefix) -> int {
     if (v.size() == prefix.size() + 3 && v.compare(0, prefix.size(), prefix) == 0 && v[prefix.size()] == '[')
@@ -11,7 +11,8 @@ double reflection_parity(const std::string& v, int d) {
   };
   for (const char* p : {"vel", "Bvec", "St"}) {
     const int c = vector_index(p);
-    if (c >= 0) return c == d ? -1.0 : 1.0;
+    const double sign = axial_magnetic_field && p[0] == 'B' ? -1.0 : 1.0;
+    if (c >= 0) return sign * (c == d ? -1.0 : 1.0);
   }
   if (v.size() == 5 && v.compare(0, 4, "beta") == 0) return v[4] == axis ? -1.0 : 1.0;
   if (v.size() == 3 && v[0] == 'g' && v[1] >= 'x' && v[1] <= 'z' && v[2] >= 'x' && v[2] <= 'z')

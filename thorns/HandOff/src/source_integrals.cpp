@@ -21,7 +21,9 @@ bool owned_by_finer(const SourceData& src, std::size_t l, const Point3& X) {
   return false;
 }
 
-void add(Integrals& s, double w, double D, double Sx, double Sy, double tau, const Point3& X) {
+void add(Integrals& s, double w, double D, double Sx, double Sy, double tau, const Point3& X, double em, double emt) {
+  s.magnetic_energy += w * em;
+  s.magnetic_energy_toroidal += w * emt;
   s.rest_mass += w * D;
   s.angular_momentum += w * (X[0] * Sy - X[1] * Sx);
   s.energy += w * (tau + D);
@@ -38,6 +40,9 @@ SourceIntegrals integrate_source(const SourceData& src, const TargetDomain& targ
     const auto& Sx = L.fields.at("St[0]");
     const auto& Sy = L.fields.at("St[1]");
     const auto& tau = L.fields.at("taut");
+    const auto em_it = L.fields.find("Emag"), emt_it = L.fields.find("Emagtor");
+    const double* em = em_it == L.fields.end() ? nullptr : em_it->second.data();
+    const double* emt = emt_it == L.fields.end() ? nullptr : emt_it->second.data();
     for (int k = 0; k < L.n[2]; ++k)
       for (int j = 0; j < L.n[1]; ++j)
         for (int i = 0; i < L.n[0]; ++i) {
@@ -45,10 +50,11 @@ SourceIntegrals integrate_source(const SourceData& src, const TargetDomain& targ
           if (!L.valid[q]) continue;
           const Point3 X{L.x(0, i), L.x(1, j), L.x(2, k)};
           if (owned_by_finer(src, l, X)) continue;
-          add(out.all, dV, D[q], Sx[q], Sy[q], tau[q], X);
-          if (target.contains(target.fold(X))) add(out.covered, dV, D[q], Sx[q], Sy[q], tau[q], X);
+          const double e = em ? em[q] : 0.0, et = emt ? emt[q] : 0.0;
+          add(out.all, dV, D[q], Sx[q], Sy[q], tau[q], X, e, et);
+          if (target.contains(target.fold(X))) add(out.covered, dV, D[q], Sx[q], Sy[q], tau[q], X, e, et);
           const double f = target.fraction_inside(X, h);
-          if (f > 0) add(out.grid, f * dV, D[q], Sx[q], Sy[q], tau[q], X);
+          if (f > 0) add(out.grid, f * dV, D[q], Sx[q], Sy[q], tau[q], X, e, et);
         }
   }
   return out;

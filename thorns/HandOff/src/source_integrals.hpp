@@ -1,7 +1,7 @@
 #pragma once
 // Integrals of the 3D data: each point counts once, on the finest level that has it, with the
 // volume delta^3 of its level. Rest mass M0 = sum sqrt(gamma) rho W dV, angular momentum about z
-// J = sum (x S_y - y S_x) dV, energy E = sum (tau + D) dV (all densitised by sqrt(gamma)); over
+// J = sum (x S_y - y S_x) dV, energy E = sum (tau + D) dV (all densitised by sqrt(gamma)), magnetic energy sum (1/2) sqrt(gamma) B^2 dV; over
 // all the data, over the target's covered region (the grid unfolded by its mirrors), and over the
 // grid itself (its fundamental domain, what the grid's own integrals compare with).
 #include "HandOff/source_data.hpp"
@@ -11,6 +11,7 @@ namespace remnant::handoff {
 
 struct Integrals {
   double rest_mass = 0, angular_momentum = 0, energy = 0;
+  double magnetic_energy = 0, magnetic_energy_toroidal = 0;  // where the data have Emag, Emagtor
 };
 
 struct SourceIntegrals {

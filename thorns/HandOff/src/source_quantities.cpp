@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 #include "remnant/error.hpp"
 
@@ -117,6 +118,7 @@ std::vector<std::string> add_conserved(SourceData& src) {
   if (!metric) notes.push_back("no ADMBase::gxx..gzz in the data: a flat 3-metric densitises the conserved variables");
   if (!src.has("alp")) notes.push_back("no ADMBase::alp in the data: the lapse is not compared");
   const bool have_cons = src.has("Dt"), have_lapse = src.has("alp");
+  const bool magnetic = src.has("Bvec[0]") && src.has("Bvec[1]") && src.has("Bvec[2]");
   for (auto& L : src.levels) {
     const std::size_t n = L.size();
     const auto& rho = L.fields.at("rho");
@@ -125,6 +127,9 @@ std::vector<std::string> add_conserved(SourceData& src) {
     const auto& ye = L.fields.at("Ye");
     const double* v[3] = {L.fields.at("vel[0]").data(), L.fields.at("vel[1]").data(), L.fields.at("vel[2]").data()};
     const double* g[6] = {};
+    const double* B[3] = {};
+    if (magnetic)
+      for (int a = 0; a < 3; ++a) B[a] = L.fields.at("Bvec[" + std::to_string(a) + "]").data();
     if (metric)
       for (int a = 0; a < 6; ++a) g[a] = L.fields.at(g_names[a]).data();
     auto& gamma13 = L.fields["gamma13"];
@@ -159,10 +164,18 @@ std::vector<std::string> add_conserved(SourceData& src) {
       if (!(rho[q] > 0)) continue;
       const double sg = std::sqrt(det), W = 1 / std::sqrt(1 - v2);
       const double h = 1 + eps[q] + press[q] / rho[q];
-      const double D = sg * rho[q] * W;
+      const double D = sg * rho[q] * W, z = rho[q] * h * W * W;
+      // The magnetic terms (Con2Prim's prim_to_cons): S_i = (z + B^2) v_i - (B.v) B_i,
+      // tau = z - p + B^2 (1 + v^2) / 2 - (B.v)^2 / 2 - D.
+      double Bl[3] = {0, 0, 0}, B2 = 0, Bv = 0;
+      if (magnetic)
+        for (int a = 0; a < 3; ++a) {
+          for (int b = 0; b < 3; ++b) Bl[a] += m[a][b] * B[b][q];
+          B2 += Bl[a] * B[a][q], Bv += Bl[a] * v[a][q];
+        }
       (*out[0])[q] = D;
-      for (int a = 0; a < 3; ++a) (*out[1 + a])[q] = sg * rho[q] * h * W * W * vl[a];
-      (*out[4])[q] = sg * (rho[q] * h * W * W - press[q]) - D;
+      for (int a = 0; a < 3; ++a) (*out[1 + a])[q] = sg * ((z + B2) * vl[a] - Bv * Bl[a]);
+      (*out[4])[q] = sg * (z - press[q] + 0.5 * B2 * (1 + v2) - 0.5 * Bv * Bv) - D;
       (*out[5])[q] = D * ye[q];
     }
   }

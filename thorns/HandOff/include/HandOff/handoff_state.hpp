@@ -13,6 +13,7 @@ namespace remnant::handoff {
 
 struct Totals {
   double rest_mass = 0, angular_momentum = 0, energy = 0;
+  double magnetic_energy = 0, magnetic_energy_toroidal = 0;  // (1/2) int sqrt(gamma) B^2, its B_phi-hat^2 part
 };
 
 struct HandOffReport {
@@ -30,6 +31,12 @@ struct HandOffReport {
   double psi4_max_rel = 0, psi4_mean_rel = 0, alpha_max_rel = 0, alpha_mean_rel = 0;  // inside the matter
   double psi4_c = 0, gamma13_c = 0, alpha_c = 0, alpha3d_c = 0, rho_c = 0;
   bool after_done = false;
+  // Magnetic field (HydroBase::magnetic_field = evolved and Bvec in the data): the grid's energy
+  // from the imported faces with the 3D data's gamma^(1/3) (imported) and with the solved psi
+  // (after), and max over cells of |net flux| / max over cells of the sum of |face fluxes|.
+  bool magnetic = false;
+  double divB_relative_max = 0;
+
 };
 
 struct HandOffState {

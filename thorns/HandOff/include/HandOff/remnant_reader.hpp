@@ -12,6 +12,7 @@
 
 namespace remnant::handoff {
 
-SourceData read_remnant_volume(const std::vector<std::string>& files, std::array<bool, 3> reflection = {false, false, false});
+SourceData read_remnant_volume(const std::vector<std::string>& files, std::array<bool, 3> reflection = {false, false, false},
+                               bool axial_magnetic_field = true);
 
 }  // namespace remnant::handoff

@@ -45,7 +45,9 @@ struct SourceData {
 };
 
 // Parity of a Cartesian component under the reflection x^d -> -x^d, from the variable's name:
-// vel[i], Bvec[i], beta<i> are vectors; g<ij> a tensor; anything else a scalar.
-double reflection_parity(const std::string& variable, int direction);
+// vel[i], beta<i> are vectors; Bvec[i] a vector (the Einstein Toolkit's HydroBase convention) or,
+// with axial_magnetic_field, an axial vector (Remnant's: the component normal to the mirror even,
+// the others odd); g<ij> a tensor; anything else a scalar.
+double reflection_parity(const std::string& variable, int direction, bool axial_magnetic_field = false);
 
 }  // namespace remnant::handoff
