@@ -78,12 +78,26 @@ const char* tsv_header() {
          "atmosphere_source\tmass_budget\n";
 }
 
+std::string tsv_header(bool collision) {
+  std::string h = tsv_header();
+  if (!collision) return h;
+  h.pop_back();  // the newline
+  return h + "\trho_max_norm\tM_rest_total\tM_adm\tM_komar\tquad_I\tquad_dI\th_plus\tz_rho_max_upper\t"
+             "z_rho_max_lower\n";
+}
+
 std::string tsv_line(const StarDiagnostics& d) {
-  char b[768];
+  char b[1536];
   std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
                 static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
                 d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
-  return b;
+  if (!d.collision) return b;
+  std::string line(b);
+  line.pop_back();
+  const CollisionDiagnostics& c = d.col;
+  std::snprintf(b, sizeof b, "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", d.rho_max_norm,
+                c.M_rest, c.M_adm, c.M_komar, c.quad_I, c.quad_dI, d.h_plus, c.z_max_upper, c.z_max_lower);
+  return line + b;
 }
 
 }  // namespace remnant::analysis

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "Analysis/collision_diagnostics.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::analysis {
@@ -17,6 +18,11 @@ struct StarDiagnostics {
   // added by the atmosphere and the error policy so far, and rest_mass + outflow - source, which
   // the scheme keeps constant to round-off.
   double outflow = 0, atmosphere_source = 0, mass_budget = 0;
+  // Collision diagnostics (only when collision_diagnostics_enabled): appended columns.
+  bool collision = false;
+  CollisionDiagnostics col;
+  double rho_max_norm = 0;  // rho_max / rho_max of the first row
+  double h_plus = 0;        // sin^2(theta) / D * d(quad_dI)/dt, backward difference to the previous row (0 on the first)
 };
 
 struct History {
@@ -27,5 +33,7 @@ struct History {
 StarDiagnostics star_diagnostics(Context& ctx);
 const char* tsv_header();
 std::string tsv_line(const StarDiagnostics& d);
+// The header and line with the collision columns appended when `collision`.
+std::string tsv_header(bool collision);
 
 }  // namespace remnant::analysis
