@@ -26,6 +26,7 @@
 #include "remnant/error.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
+#include "tracking.hpp"
 
 std::span<const remnant::ThornEntry> remnant_compiled_thorns();
 
@@ -205,6 +206,41 @@ TEST(HeadOnData, CylindricalMatchesCartesian) {
   EXPECT_GT(std::log2(e / e_fine), 1.5);  // the cell-centroid samples of the star: second order
   EXPECT_NEAR(ry.rho_max / rc.rho_max, 1.0, 1.5e-2);
   EXPECT_NEAR(ry.psi_max / rc.psi_max, 1.0, 1e-3);
+}
+
+// Density tracking: nested levels around the star (octant: the upper star at z = 12), every block
+// at least at the level its distance asks for; after the density maximum moves, HeadOn_TrackStars finds it
+// and the criterion asks for the finest level there.
+TEST(HeadOnData, RefinementFollowsTheDensityMaximum) {
+  auto sim = run({"Grid::ncells=[16,16,16]", "Grid::block_size=[8,8,8]", "Grid::max_level=2", "HeadOn::refine_radii=[16,7]"});
+  Context& ctx = sim->context();
+  const std::vector<double> radii = {16, 7};
+  headon::Centres& c = headon::centres(ctx);
+  EXPECT_EQ(c.z[1], 12.0);
+  EXPECT_EQ(c.z[0], -12.0);
+  // Families refine together (and 2:1 balance), so the criterion gives a lower bound of the level.
+  int finest = 0, below = 0, blocks = 0, finest_blocks = 0;
+  for (Block* b : ctx.grid().local_blocks()) {
+    finest = std::max(finest, b->level);
+    if (b->level < headon::wanted_level(*b, c, radii)) ++below;
+    ++blocks;
+    if (b->level == 2) ++finest_blocks;
+  }
+  std::printf("density tracking: %d blocks, %d on level 2\n", blocks, finest_blocks);
+  EXPECT_EQ(finest, 2);
+  EXPECT_EQ(below, 0);
+  EXPECT_LT(2 * finest_blocks, blocks);
+  // Move the maximum: a denser cell at z ~ 3 makes it the upper star's centre.
+  for (Block* b : ctx.grid().local_blocks()) {
+    const vars::HydroBase::prim p(ctx, *b);
+    for_interior(*b, [&](int i, int j, int k) {
+      if (i == 0 && j == 0 && b->lo[0] == 0 && b->lo[1] == 0 && b->x(2, k) > 2.5 && b->x(2, k) < 3.8) p.rho(i, j, k) = 1;
+    });
+  }
+  headon::track_stars(ctx);
+  EXPECT_GT(c.z[1], 2.5);
+  EXPECT_LT(c.z[1], 3.8);
+  EXPECT_EQ(c.z[0], -c.z[1]);  // equatorial symmetry: the mirror
 }
 
 TEST(HeadOnData, OverlappingStarsAreRefused) {
