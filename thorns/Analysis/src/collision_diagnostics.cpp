@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include "remnant/cell_geometry.hpp"
@@ -47,6 +48,9 @@ double symmetry_factor(const Context& ctx) {
     if (blo[d] == "reflect" && lo[d] == 0) f *= 2;
     if (bhi[d] == "reflect" && hi[d] == 0) f *= 2;
   }
+  // Spherical grids: the equator theta = pi/2 as the upper theta boundary.
+  const bool spherical = ctx.param<std::string>("Grid", "coordinates") == "spherical";
+  if (spherical && dim >= 2 && bhi[1] == "reflect" && std::abs(hi[1] - 0.5 * std::numbers::pi) < 1e-12) f *= 2;
   return f;
 }
 
