@@ -243,6 +243,14 @@ TEST(HeadOnData, RefinementFollowsTheDensityMaximum) {
   EXPECT_EQ(c.z[0], -c.z[1]);  // equatorial symmetry: the mirror
 }
 
+// --debug (NaN-poisoned outputs, undeclared writes, views of undeclared groups) through the
+// initial solve with the rest-mass fix, a tracked level, regrids and the collision diagnostics.
+TEST(HeadOnData, DeclarationsHoldInDebugMode) {
+  EXPECT_NO_THROW(run({"Flesh::debug=true", "MoL::max_iterations=3", "Grid::ncells=[16,16,16]", "Grid::block_size=[8,8,8]",
+                       "Grid::max_level=1", "Grid::regrid_every=2", "HeadOn::refine_radii=[12]",
+                       "HeadOn::infall_velocity=0.02"}));
+}
+
 TEST(HeadOnData, OverlappingStarsAreRefused) {
   try {
     run({"HeadOn::separation=12"});
