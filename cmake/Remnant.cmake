@@ -171,14 +171,15 @@ function(remnant_add_executable_from_schedule sched)
   set_property(GLOBAL APPEND PROPERTY REMNANT_EXECUTABLES ${exe})
 endfunction()
 
-# remnant_thorn_tests(<Name> SOURCES <files...> [THORNS <thorns...>] [LIBS <targets...>])
+# remnant_thorn_tests(<Name> SOURCES <files...> [THORNS <thorns...>] [LIBS <targets...>] [LABELS <labels...>])
 # A GoogleTest program test_<Name>, labelled <Name> in CTest. With THORNS, the test links those
-# thorns and a thorn table (remnant_compiled_thorns()) so that it can run whole simulations.
+# thorns and a thorn table (remnant_compiled_thorns()) so that it can run whole simulations. With
+# LABELS (e.g. long), the program is one CTest test <Name> labelled <Name> and LABELS.
 function(remnant_thorn_tests name)
   if(NOT REMNANT_BUILD_TESTS)
     return()
   endif()
-  cmake_parse_arguments(ARG "" "" "SOURCES;THORNS;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "" "" "SOURCES;THORNS;LIBS;LABELS" ${ARGN})
   set(target test_${name})
   add_executable(${target} ${ARG_SOURCES})
   target_link_libraries(${target} PRIVATE remnant_test_main GTest::gtest ${ARG_LIBS})
@@ -192,6 +193,11 @@ function(remnant_thorn_tests name)
     # Thorn folders are added in sorted order: link the thorn list once every thorn is known.
     cmake_language(EVAL CODE
       "cmake_language(DEFER DIRECTORY \"${CMAKE_SOURCE_DIR}\" CALL _remnant_link_test_thorns \"${target}\" \"${name}\" ${ARG_THORNS})")
+  endif()
+  if(ARG_LABELS)
+    add_test(NAME ${name} COMMAND ${target} WORKING_DIRECTORY ${CMAKE_BINARY_DIR})
+    set_tests_properties(${name} PROPERTIES LABELS "${name};${ARG_LABELS}")
+    return()
   endif()
   gtest_discover_tests(${target} PROPERTIES LABELS "${name}" DISCOVERY_TIMEOUT 60
                        WORKING_DIRECTORY ${CMAKE_BINARY_DIR})

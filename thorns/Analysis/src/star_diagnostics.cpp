@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 #include "remnant/coordinates.hpp"
@@ -70,34 +71,46 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   d.outflow = outflow;
   d.atmosphere_source = source;
   d.mass_budget = mass_g + outflow - source;
+  if (ctx.param<bool>("Analysis", "rotation")) {  // computed by Analysis_Rotation just before
+    d.has_rotation = true;
+    d.rotation = ctx.service<RotationDiagnostics>("Analysis::rotation_now");
+  }
   return d;
 }
 
-const char* tsv_header() {
-  return "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
-         "atmosphere_source\tmass_budget\n";
-}
-
-std::string tsv_header(bool collision) {
-  std::string h = tsv_header();
-  if (!collision) return h;
-  h.pop_back();  // the newline
-  return h + "\trho_max_norm\tM_rest_total\tM_adm\tM_komar\tquad_I\tquad_dI\th_plus\tz_rho_max_upper\t"
-             "z_rho_max_lower\n";
+std::string tsv_header(bool rotation, bool magnetic, bool collision) {
+  std::string h = "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
+                  "atmosphere_source\tmass_budget";
+  if (rotation) h += "\tJ\tT_over_W\tOmega_c\tM_komar\tmode_m1\tmode_m2";
+  if (magnetic) h += "\tdivB_max\tE_mag\tE_mag_pol\tE_mag_tor\tB_max";
+  if (collision)
+    h += "\trho_max_norm\tM_rest_total\tM_adm\tM_komar_total\tquad_I\tquad_dI\th_plus\tz_rho_max_upper\t"
+         "z_rho_max_lower";
+  return h + "\n";
 }
 
 std::string tsv_line(const StarDiagnostics& d) {
   char b[1536];
-  std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
-                static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
-                d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
-  if (!d.collision) return b;
-  std::string line(b);
-  line.pop_back();
-  const CollisionDiagnostics& c = d.col;
-  std::snprintf(b, sizeof b, "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", d.rho_max_norm,
-                c.M_rest, c.M_adm, c.M_komar, c.quad_I, c.quad_dI, d.h_plus, c.z_max_upper, c.z_max_lower);
-  return line + b;
+  int n = std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g",
+                        static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
+                        d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
+  if (d.has_rotation) {
+    const RotationDiagnostics& r = d.rotation;
+    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", r.J,
+                       r.T_over_W, r.omega_c, r.M_komar, r.mode_m1, r.mode_m2);
+  }
+  if (d.magnetic) {
+    const MagneticDiagnostics& m = *d.magnetic;
+    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", m.divB_max, m.E_mag,
+                       m.E_mag_pol, m.E_mag_tor, m.B_max_gauss);
+  }
+  if (d.collision) {
+    const CollisionDiagnostics& c = d.col;
+    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g",
+                       d.rho_max_norm, c.M_rest, c.M_adm, c.M_komar, c.quad_I, c.quad_dI, d.h_plus, c.z_max_upper,
+                       c.z_max_lower);
+  }
+  return std::string(b) + "\n";
 }
 
 }  // namespace remnant::analysis

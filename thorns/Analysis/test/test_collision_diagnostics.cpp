@@ -128,8 +128,12 @@ TEST(CollisionDiagnostics, ColumnsOnlyWhenAsked) {
   auto plain = octant_star(16, {});
   const auto& row = plain->context().service<analysis::History>("Analysis::history").rows.back();
   EXPECT_FALSE(row.collision);
-  EXPECT_EQ(analysis::tsv_header(false), std::string(analysis::tsv_header()));
-  const std::string h = analysis::tsv_header(true);
-  EXPECT_EQ(h.rfind(std::string(analysis::tsv_header()).substr(0, std::string(analysis::tsv_header()).size() - 1), 0), 0u);
-  EXPECT_NE(h.find("\th_plus\t"), std::string::npos);
+  // The collision columns come after everything else (rotation and magnetic columns included).
+  for (bool rotation : {false, true})
+    for (bool magnetic : {false, true}) {
+      const std::string plain = analysis::tsv_header(rotation, magnetic);
+      const std::string h = analysis::tsv_header(rotation, magnetic, true);
+      EXPECT_EQ(h.rfind(plain.substr(0, plain.size() - 1) + "\trho_max_norm\t", 0), 0u) << h;
+      EXPECT_NE(h.find("\th_plus\t"), std::string::npos);
+    }
 }

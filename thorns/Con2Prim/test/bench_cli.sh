@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # remnant-c2p-bench: out-of-range options are errors naming the option (exit 2), and the fuzz mode
-# finds no NaN and no silently wrong recovery in 1e5 random states over the SFHo table.
+# finds no NaN and no silently wrong recovery in 1e5 random states over the SFHo table; the
+# benchmark planes reach the accuracies the README quotes.
 # Usage: bench_cli.sh <remnant-c2p-bench> <shared eos dir>
 set -uo pipefail
 exe=$1
@@ -51,5 +52,23 @@ if [ "$rc" != 0 ]; then echo "FAIL fuzz: exit $rc"; echo "$out" | tail -5; faile
 # Columns of summary.tsv: silently_wrong (12), nan (14); one row per method.
 rows=$(awk -F'\t' '$1 == "fuzz" && $3 == 100000 && $12 == 0 && $14 == 0' "$tmp/fuzz/summary.tsv" | wc -l)
 if [ "$rows" != 2 ]; then echo "FAIL fuzz summary:"; cat "$tmp/fuzz/summary.tsv"; failed=$((failed + 1)); fi
+
+# The README's accuracy figures (issue 20, item 6): the paper's two planes on SFHo. Measured mean
+# eps_recov on the rho-T plane 6.25e-14 (Kastaun) and 8.43e-14 (Palenzuela) with 45.4 / 56.1 EOS
+# calls; the W-b^2/2p plane 9.6e-10 / 8.8e-10. Bounds: 3x the accuracies, +10 % the calls; no
+# failures, flags, silently wrong or NaN states (columns 10-14).
+"$exe" "$table" --no-timing --out="$tmp/planes" >/dev/null 2>&1 || { echo "FAIL planes: exit $?"; failed=$((failed + 1)); }
+check_plane() {  # plane method max_mean_eps max_mean_calls
+  local row
+  row=$(awk -F'\t' -v p="$1" -v m="$2" -v e="$3" -v c="$4" \
+    '$1 == p && $2 == m { ok = ($4 < e && $9 < c && $10 == 0 && $11 == 0 && $12 == 0 && $14 == 0); print (ok ? "ok  " : "FAIL"), $0 }' \
+    "$tmp/planes/summary.tsv")
+  echo "$row (bounds: mean eps_recov < $3, EOS calls < $4)"
+  [[ $row == ok* ]] || failed=$((failed + 1))
+}
+check_plane rhoT kastaun 2e-13 50
+check_plane rhoT palenzuela 2.5e-13 62
+check_plane Wb kastaun 3e-9 42
+check_plane Wb palenzuela 3e-9 86
 
 [ $failed = 0 ] && echo "all passed" || { echo "$failed failed"; exit 1; }

@@ -1,4 +1,7 @@
 // Neutrinoless beta equilibrium on the SFHo tables.
+#include <cmath>
+#include <cstdio>
+
 #include "EOS/beta_equilibrium.hpp"
 #include "EOS/readers.hpp"
 #include "eos_test_util.hpp"
@@ -30,6 +33,32 @@ TEST(EOSBeta, YeAt8p5e13AndT0p1OnSfho) {
     EXPECT_LT(std::abs(eos->mu_nu(kRho, kT, be.ye)), 1e-8);
   }
   EXPECT_NEAR(a.ye, 0.095, 0.01);  // SOURCES.md quotes about 0.095 for the StellarCollapse file
+  // The CompOSE convention (mu_e = mu_l - mu_q): measured 0.0197 (README); 0.0197 +- 0.001.
+  EXPECT_NEAR(b.ye, 0.0197, 1e-3);
+}
+
+// Which convention is right: at n_b = 0.1 fm^-3, Ye = 0.1, T = 0.1 MeV the electrons are an ultra-
+// relativistic degenerate gas, mu_e = sqrt((hbar c)^2 (3 pi^2 Ye n_b)^(2/3) + m_e^2) = 131.5 MeV
+// (thermal corrections ~ (pi^2/2)(T/mu)^2 ~ 3e-6). The CompOSE reading must reproduce it; the
+// StellarCollapse file's mu_e column (CompOSE's mu_l) does not.
+TEST(EOSBeta, ElectronChemicalPotentialOfADegenerateGas) {
+  const std::string sc = eos_test::shared_eos("SFHo_reduced_39r_39t_20y.h5");
+  const std::string ch = eos_test::shared_eos("SFHo_reduced_39r_39t_20y_compose.h5");
+  REQUIRE_TABLE(sc);
+  REQUIRE_TABLE(ch);
+  Tabulated<> eos_sc(load_table(sc));
+  Tabulated<> eos_ch(load_table(ch));
+  const double nb = 0.1, ye = 0.1, T = 0.1, hbar_c = 197.3269804, m_e = 0.51099895;
+  const double pF = hbar_c * std::cbrt(3 * M_PI * M_PI * ye * nb);
+  const double expected = std::sqrt(pF * pF + m_e * m_e);
+  // rho = n_b m with the table's baryon mass (SFHo CompOSE: the neutron mass).
+  const double rho = nb * remnant::units::neutron_mass_MeV * remnant::units::MeV_fm3_mass_to_code_rho;
+  const double mu_ch = eos_ch.chem(rho, T, ye).mu_e, mu_sc = eos_sc.chem(rho, T, ye).mu_e;
+  std::printf("[ mu_e ] n_b = 0.1 fm^-3, Ye = 0.1, T = 0.1 MeV: degenerate gas %.2f MeV; CompOSE mu_l - mu_q %.2f MeV; "
+              "StellarCollapse column %.2f MeV\n",
+              expected, mu_ch, mu_sc);
+  EXPECT_NEAR(mu_ch / expected, 1.0, 5e-3);  // measured 131.59 vs 131.52 MeV (5e-4)
+  EXPECT_GT(std::abs(mu_sc / expected - 1), 0.1);
 }
 
 TEST(EOSBeta, ColdSliceIsMonotoneInPressure) {

@@ -9,11 +9,13 @@
 
 #include "EOS/eos.hpp"
 #include "RotatingStar/eos_slice.hpp"
+#include "check_field.hpp"
 #include "RotatingStar/report.hpp"
 #include "RotatingStar/rns_solver.hpp"
 #include "remnant/cell_geometry.hpp"
 #include "remnant/context.hpp"
 #include "remnant/coordinates.hpp"
+#include "remnant/domain.hpp"
 #include "remnant/registrar.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
@@ -62,6 +64,8 @@ RnsParameters read_parameters(const Context& ctx) {
   p.lmax = integer("lmax");
   p.r_out_factor = real("r_out_factor");
   p.tolerance = real("tolerance");
+  p.field.K_m = real("K_m");
+  p.field.m = real("m");
   return p;
 }
 
@@ -79,7 +83,7 @@ std::string exact(double v) {
 const RotatingStarModel& model_for(const Context& ctx) {
   static std::map<std::string, Cached> cache;  // key: the resolved parameters of this thorn
   std::string key = ctx.param<std::string>("RotatingStar", "eos_slice") + ctx.param<std::string>("RotatingStar", "rotation_law");
-  for (const char* n : {"poly_K", "poly_gamma", "ye", "slice_T", "rho_central", "omega", "axis_ratio", "A2", "r_out_factor", "tolerance"})
+  for (const char* n : {"poly_K", "poly_gamma", "ye", "slice_T", "rho_central", "omega", "axis_ratio", "A2", "r_out_factor", "tolerance", "K_m", "m"})
     key += " " + exact(ctx.param<double>("RotatingStar", n));
   for (const char* n : {"nr", "n_theta", "lmax"}) key += " " + std::to_string(ctx.param<std::int64_t>("RotatingStar", n));
   for (const char* n : {"pwp_gammas", "pwp_rho_bounds"})
@@ -110,8 +114,24 @@ const RotatingStarModel& model_for(const Context& ctx) {
   return *cache.emplace(key, std::move(c)).first->second.model;
 }
 
+// A mirror plane through the rotation axis (Cartesian x = 0 or y = 0) reverses the rotation in
+// the image half: v^phi and beta^phi would jump there and J would cancel. Only z = 0 mirrors a
+// rotating star.
+void check_rotation_symmetry(const Context& ctx, const RotatingStarModel& star) {
+  if (star.globals().omega_c == 0 || ctx.grid().coordinates() != CoordinateSystem::cartesian || ctx.grid().dimension() < 2)
+    return;
+  const Domain d = ctx.grid().domain();
+  for (int dir = 0; dir < 2; ++dir)
+    for (int side = 0; side < 2; ++side)
+      if (d.faces.boundary[dir][side] == Boundary::reflect)
+        throw RunError(std::string("RotatingStar: Grid::boundary_") + (side == 0 ? "lower" : "upper") + "[" + std::to_string(dir) +
+                       "] = reflect mirrors the star through a plane containing the rotation axis, which reverses its rotation; "
+                       "a rotating star needs the whole (x, y) plane (outflow in x and y; reflect in z is allowed)");
+}
+
 void initial(Context& ctx) {
   const RotatingStarModel& star = model_for(ctx);
+  check_rotation_symmetry(ctx, star);
   for (Block* b : ctx.grid().local_blocks()) {
     const vars::HydroBase::prim prim(ctx, *b);
     const vars::Spacetime::metric metric(ctx, *b);
@@ -154,4 +174,7 @@ void initial(Context& ctx) {
 }  // namespace
 }  // namespace remnant::rotstar
 
-REMNANT_REGISTER_THORN(RotatingStar) { reg.function("RotatingStar_Initial", remnant::rotstar::initial); }
+REMNANT_REGISTER_THORN(RotatingStar) {
+  reg.function("RotatingStar_CheckParameters", remnant::rotstar::check_field_parameters);
+  reg.function("RotatingStar_Initial", remnant::rotstar::initial);
+}

@@ -106,11 +106,18 @@ RnsPoint RotatingStarModel::at(double r, double theta) const {
   const double r_surface = surface_[k] + (x - k) * (surface_[k + 1] - surface_[k]);
   out.ye = slice_.at(0).ye;
   if (r > r_surface) return out;
-  const auto lr = local_rotation(p_.law, omega_, A2_, m.psi * m.psi * r * s, out.alpha, m.bphi);
+  const double varpi = m.psi * m.psi * r * s;
+  const auto lr = local_rotation(p_.law, omega_, A2_, varpi, out.alpha, m.bphi);
   if (!lr) return out;
-  const double H = C_ - std::log(out.alpha) + lr->bernoulli;
-  if (!(H > 0)) return out;
+  const double rhs = C_ - std::log(out.alpha) + lr->bernoulli;
+  if (!(rhs > 0)) return out;
+  const double H = log_enthalpy_with_field(slice_, field_, rhs, out.alpha * out.alpha * varpi * varpi);
   const tov::ColdState st = slice_.at(H);
+  if (field_.active()) {
+    const double rho_h = st.rho * (1 + st.eps) + st.press;
+    out.B = field_.magnitude(out.alpha, varpi, rho_h);
+    out.B_phi = field_.phi_component(out.alpha, m.psi, r * s, rho_h);
+  }
   out.rho = st.rho, out.eps = st.eps, out.press = st.press, out.ye = st.ye;
   out.W = lr->W;
   out.vel_phi = (lr->omega + m.bphi) / out.alpha;

@@ -2,7 +2,8 @@
 // identities. Volume integrals: trapezoidal rule in r, the Gauss rule in mu (both hemispheres).
 //   M_rest = int rho W psi^6 dV, M_proper = int rho (1 + eps) W psi^6 dV,
 //   M_Komar = int [alpha (E + S) - 2 beta^phi S_phi] psi^6 dV, J = int S_phi psi^6 dV,
-//   T = int Omega S_phi psi^6 dV / 2, |W| = M_proper + T - M_Komar;
+//   T = int Omega S_phi psi^6 dV / 2, H = int B^2 / 2 psi^6 dV (toroidal field), |W| = M_proper + T + H - M_Komar;
+// with a toroidal field E, S and S^phi_phi carry its energy and stresses (magnetic_law.hpp).
 //   M_ADM from the monopole of psi (psi -> 1 + M / 2r).
 // Virial identities. GR's (Bonazzola & Gourgoulhon 1994) do not hold in xCFC for a rotating star:
 // with A = B = psi^2, N = alpha, omega = -beta^phi, nu = ln alpha, over the meridional plane
@@ -33,7 +34,7 @@ void RotatingStarModel::compute_globals() {
     const double rs = surface_radius(double(k) / (surface_.size() - 1), omega_, A2_);
     surface_[k] = rs < 0 ? r_out() : rs;
   }
-  double M0 = 0, Mp = 0, MK = 0, J = 0, T = 0;
+  double M0 = 0, Mp = 0, MK = 0, J = 0, T = 0, Hm = 0;
   double gr2_pos = 0, gr2_neg = 0, x2_pos = 0, x2_neg = 0, x3_pos = 0, x3_neg = 0;
   // Field terms of the identities at (r, theta) with S = S^i_i, Sphiphi = S^phi_phi there;
   // dA = r dr dtheta (meridional plane, both hemispheres), dV = r^2 dr dOmega.
@@ -75,13 +76,15 @@ void RotatingStarModel::compute_globals() {
       const double dV = 2 * kPi * 2 * leg_.weight[j] * r * r * dr;
       const double ps = psi_[k], p6 = std::pow(ps, 6), alpha = apsi_[k] / ps;
       const double h = 1 + eps_[k] + (rho_[k] > 0 ? press_[k] / rho_[k] : 0), w = rho_[k] * h * W_[k] * W_[k];
-      const double E = w - press_[k], S = w * v_[k] * v_[k] + 3 * press_[k];
+      const double pm = 0.5 * B_[k] * B_[k];
+      const double E = w - press_[k] + pm, S = w * v_[k] * v_[k] + 3 * press_[k] + pm;
       const double Sphi = w * v_[k] * ps * ps * r * s;
       M0 += rho_[k] * W_[k] * p6 * dV;
       Mp += rho_[k] * (1 + eps_[k]) * W_[k] * p6 * dV;
       MK += (alpha * (E + S) - 2 * bphi_[k] * Sphi) * p6 * dV;
       J += Sphi * p6 * dV;
       T += 0.5 * omega_f_[k] * Sphi * p6 * dV;
+      Hm += pm * p6 * dV;
       if (i > 0) identities(r, std::acos(mu), S, 0, 0, dV);
     }
   }
@@ -99,8 +102,9 @@ void RotatingStarModel::compute_globals() {
       const double th = (j + 0.5) * dth;
       const RnsPoint q = at(r, th);
       const double h = 1 + q.eps + (q.rho > 0 ? q.press / q.rho : 0), v = q.psi * q.psi * r * std::sin(th) * q.vel_phi;
-      const double wv2 = q.rho * h * q.W * q.W * v * v;
-      identities(r, th, wv2 + 3 * q.press, wv2 + q.press, 2 * r * dr * dth, 0);
+      const double wv2 = q.rho * h * q.W * q.W * v * v, pm = 0.5 * q.B * q.B;
+      // The toroidal field's stresses: S += B^2/2, S^phi_phi -= B^2/2 (tension along phi).
+      identities(r, th, wv2 + 3 * q.press + pm, wv2 + q.press - pm, 2 * r * dr * dth, 0);
     }
   }
   exterior([&](double r, double dr) {
@@ -112,8 +116,11 @@ void RotatingStarModel::compute_globals() {
   g_.M_adm = 2 * r_max() * psi_l_[0][N_];
   g_.J = J;
   g_.T_kin = T;
-  g_.W_bind = Mp + T - MK;
+  g_.H_mag = Hm;
+  g_.W_bind = Mp + T + Hm - MK;  // M_komar = M_proper + T + H - |W|
   g_.T_over_W = T / std::abs(g_.W_bind);
+  g_.H_over_W = Hm / std::abs(g_.W_bind);
+  g_.B_max = *std::max_element(B_.begin(), B_.end());
   g_.r_e = r_e_;
   g_.r_p = r_p_;
   g_.axis_ratio = r_p_ / r_e_;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 
 #include "RotatingStar/rns_solver.hpp"
 #include "TOV/tov_solver.hpp"
@@ -25,6 +26,10 @@ void check_parameters(const RnsParameters& p) {
   if (!(p.omega >= 0)) throw RnsError(fmt("Omega = %g must be >= 0 (prograde rotation about +z)", p.omega));
   if (!(p.axis_ratio >= 0 && p.axis_ratio <= 1)) throw RnsError(fmt("axis ratio r_p/r_e = %g must be in (0, 1]", p.axis_ratio));
   if (p.law == RotationLaw::j_constant && !(p.A2 > 0)) throw RnsError(fmt("A^2 = %g must be positive", p.A2));
+  if (!(p.field.K_m >= 0) || !std::isfinite(p.field.K_m))
+    throw RnsError(fmt("K_m = %g of the toroidal field must be >= 0 (0: no field)", p.field.K_m));
+  if (p.field.active() && !(p.field.m >= 1 && std::isfinite(p.field.m)))
+    throw RnsError(fmt("m = %g of the toroidal field must be >= 1 (B ~ varpi^(2m-1) on the axis)", p.field.m));
   if (p.nr < 20 || p.n_theta < 2 || p.lmax < 0 || p.lmax >= 2 * p.n_theta || !(p.r_out_factor > 1.05))
     throw RnsError("resolution: need nr >= 20, n_theta >= 2, 0 <= lmax < 2 n_theta, r_out_factor > 1.05");
 }
@@ -32,7 +37,7 @@ void check_parameters(const RnsParameters& p) {
 }  // namespace
 
 RotatingStarModel::RotatingStarModel(const tov::ColdSlice& slice, const RnsParameters& p)
-    : slice_(slice), p_(p), leg_(std::max(p.n_theta, 1), std::max(p.lmax, 0)) {
+    : slice_(slice), p_(p), field_(p.field), leg_(std::max(p.n_theta, 1), std::max(p.lmax, 0)) {
   check_parameters(p_);
   Hc_ = slice.log_enthalpy(p_.rho_central);
   const double rho_back = Hc_ > 0 ? slice.at(Hc_).rho : 0;
@@ -55,9 +60,19 @@ RotatingStarModel::RotatingStarModel(const tov::ColdSlice& slice, const RnsParam
     psi_l_[0][i] = t.psi - 1;
     apsi_l_[0][i] = t.alpha * t.psi - 1;
   }
-  for (auto* f : {&psi_, &apsi_, &bphi_, &rho_, &eps_, &press_, &ye_, &W_, &v_, &omega_f_, &aa_})
+  for (auto* f : {&psi_, &apsi_, &bphi_, &rho_, &eps_, &press_, &ye_, &W_, &v_, &omega_f_, &aa_, &B_})
     f->assign(std::size_t(n) * nmu_, 0.0);
-  solve();
+  tov_psi_ = psi_l_[0];
+  tov_apsi_ = apsi_l_[0];
+  if (p_.axis_ratio == 0 && p_.omega > 0) {
+    try {
+      solve();
+    } catch (const RnsError& direct) {
+      solve_omega_by_axis_ratio(direct);  // near mass shedding the fixed-Omega iteration runs away
+    }
+  } else {
+    solve();
+  }
   compute_globals();
   const RnsGlobals& g = g_;
   for (double v : {g.M_komar, g.M_adm, g.M_rest, g.J, g.r_e, g.r_p, g.R_circ, g.omega_c, g.omega_e, g.grv2, g.grv3})
@@ -142,28 +157,33 @@ bool RotatingStarModel::matter_from_bernoulli(bool ramping) {
     for (int i = 0; i <= N_; ++i) {
       const std::size_t k = std::size_t(i) * nmu_ + j;
       if (!inside) {  // past the surface: no matter, and no root of the rotation law needed
-        rho_[k] = eps_[k] = press_[k] = v_[k] = omega_f_[k] = 0;
+        rho_[k] = eps_[k] = press_[k] = v_[k] = omega_f_[k] = B_[k] = 0;
         ye_[k] = ye_outside;
         W_[k] = 1;
         continue;
       }
       const double r = r_[i], alpha = apsi_[k] / psi_[k];
-      const auto lr = local_rotation(p_.law, omega_, A2_, psi_[k] * psi_[k] * r * s, alpha, bphi_[k]);
-      const double H = lr ? C_ - std::log(alpha) + lr->bernoulli : -1.0;
-      inside = lr && H > 0 && i <= p_.nr;
+      const double varpi = psi_[k] * psi_[k] * r * s;
+      const auto lr = local_rotation(p_.law, omega_, A2_, varpi, alpha, bphi_[k]);
+      const double rhs = lr ? C_ - std::log(alpha) + lr->bernoulli : -1.0;
+      inside = lr && rhs > 0 && i <= p_.nr;
       if (inside) {
+        // The field's term vanishes with rho: the surface (rhs = 0) is that of the unmagnetised law.
+        const double H = log_enthalpy_with_field(slice_, field_, rhs, alpha * alpha * varpi * varpi);
         const tov::ColdState st = slice_.at(H);
         rho_[k] = st.rho, eps_[k] = st.eps, press_[k] = st.press, ye_[k] = st.ye;
         W_[k] = lr->W, v_[k] = lr->v, omega_f_[k] = lr->omega;
+        B_[k] = field_.active() ? field_.magnitude(alpha, varpi, st.rho * (1 + st.eps) + st.press) : 0.0;
       } else {
-        rho_[k] = eps_[k] = press_[k] = v_[k] = 0;
+        rho_[k] = eps_[k] = press_[k] = v_[k] = B_[k] = 0;
         ye_[k] = ye_outside;
         W_[k] = 1;
         omega_f_[k] = 0;
       }
       if (i == p_.nr && inside && !ramping)
         throw RnsError(fmt("no stellar surface inside r_out = %g along theta = %g: the rotation is beyond mass shedding or the star does not fit the grid (r_out_factor)",
-                           r_out(), std::acos(mu)));
+                           r_out(), std::acos(mu)) +
+                       (field_.active() ? fmt("; a toroidal field (K_m = %g) makes the star prolate: try r_out_factor 3 or more, or K_m is too strong for an equilibrium", field_.K_m) : ""));
     }
   }
   if (p_.axis_ratio == 0) {
@@ -180,7 +200,9 @@ bool RotatingStarModel::matter_from_bernoulli(bool ramping) {
 
 void RotatingStarModel::solve() {
   const bool rotating = p_.omega > 0 || (p_.axis_ratio > 0 && p_.axis_ratio < 1);
-  const int ramp = rotating ? 20 : 0;
+  // The rotation and the field are switched on over the first iterations (the field's energy,
+  // K_m^2, linearly): from the static star's metric a strong field overshoots the surface.
+  const int ramp = rotating || p_.field.active() ? 20 : 0;
   const double target_ratio = p_.axis_ratio, target_omega = p_.omega;
   double change = 0;
   int it = 0;
@@ -188,7 +210,8 @@ void RotatingStarModel::solve() {
     const bool ramping = it < ramp;
     const double f = ramping ? double(it + 1) / ramp : 1.0;
     if (target_ratio > 0) p_.axis_ratio = 1 - f * (1 - target_ratio);
-    else omega_ = f * target_omega;
+    else omega_ = std::sqrt(f) * target_omega;
+    field_.K_m = std::sqrt(f) * p_.field.K_m;
     evaluate_metric_on_grid();
     matter_from_bernoulli(ramping);
     std::vector<std::vector<std::vector<double>>> old;
@@ -209,6 +232,7 @@ void RotatingStarModel::solve() {
     if (!ramping && change < p_.tolerance) break;
   }
   p_.axis_ratio = target_ratio;
+  field_ = p_.field;
   if (it == p_.max_iterations)
     throw RnsError(fmt("no convergence in %g iterations (last change %g): no equilibrium for these parameters (beyond mass shedding or unstable)",
                        p_.max_iterations, change));
@@ -224,14 +248,80 @@ void RotatingStarModel::solve() {
   }
 }
 
+void RotatingStarModel::restart_from_tov() {
+  for (auto* a : {&psi_l_, &dpsi_l_, &apsi_l_, &dapsi_l_, &b_l_, &db_l_, &x_l_, &dx_l_})
+    for (auto& f : *a) std::fill(f.begin(), f.end(), 0.0);
+  psi_l_[0] = tov_psi_;
+  apsi_l_[0] = tov_apsi_;
+  omega_ = 0;
+}
+
+// Omega(r_p/r_e) rises monotonically from 0 at ratio 1 to the Kepler rate at mass shedding, and the
+// axis-ratio iteration stays stable there: find the ratio whose Omega is the target, by regula falsi
+// (Illinois) between a slower model and a faster one or a failed (beyond-shedding) ratio, which is
+// then bisected. A target above every model's Omega is beyond shedding: the direct error stands.
+void RotatingStarModel::solve_omega_by_axis_ratio(const RnsError& direct) {
+  const double target = p_.omega;
+  auto omega_at = [&](double q) -> std::optional<double> {
+    restart_from_tov();
+    p_.axis_ratio = q;
+    p_.omega = 0;
+    try {
+      solve();
+    } catch (const RnsError&) {
+      return std::nullopt;
+    }
+    return omega_;
+  };
+  // Bracket: q_slow has Omega < target (ratio 1: Omega = 0); q_fast has Omega > target or failed.
+  double q_slow = 1, f_slow = -target, q_fast = 0, f_fast = 0;
+  bool fast_valid = false;
+  for (double q = 0.9; q > 0.3; q -= 0.1) {
+    const auto om = omega_at(q);
+    if (om && *om < target) { q_slow = q, f_slow = *om - target; continue; }
+    q_fast = q, fast_valid = bool(om), f_fast = om ? *om - target : 0;
+    break;
+  }
+  if (q_fast == 0) throw direct;
+  int side = 0;
+  for (int it = 0; it < 60; ++it) {
+    double q = 0.5 * (q_slow + q_fast);
+    if (fast_valid) q = (q_slow * f_fast - q_fast * f_slow) / (f_fast - f_slow);
+    const auto om = omega_at(q);
+    if (om && std::abs(*om / target - 1) < 1e-9) {
+      p_.axis_ratio = 0;
+      p_.omega = target;
+      return;
+    }
+    if (om && *om < target) {
+      q_slow = q, f_slow = *om - target;
+      if (side == -1 && fast_valid) f_fast *= 0.5;  // Illinois: the stale end's weight halves
+      side = -1;
+    } else {
+      q_fast = q, fast_valid = bool(om), f_fast = om ? *om - target : 0;
+      if (side == 1) f_slow *= 0.5;
+      side = 1;
+    }
+    if (q_slow - q_fast < 1e-7) break;  // Omega(q) is flat at shedding: 1e-7 in q is < 1e-7 in Omega
+    // Within 1e-3 of the shedding ratio Omega changes by ~1e-4 (BU sequence): 1e-3 short is out of reach.
+    if (!fast_valid && q_slow - q_fast < 1e-3 && f_slow < -1e-3 * target) break;
+  }
+  p_.axis_ratio = 0;
+  p_.omega = target;
+  if (fast_valid) throw direct;
+  throw RnsError(fmt("Omega = %.7g is beyond mass shedding: the fastest equilibrium of this central density rotates at Omega = %.7g (r_p/r_e = %.5f)",
+                     target, f_slow + target, q_slow));
+}
+
 void RotatingStarModel::solve_potentials() {
   const int n = N_ + 1;
   const std::size_t N = std::size_t(n) * nmu_;
   std::vector<double> E(N), S(N), Sphi(N), src(N);  // Sphi = S_phi / (r sin theta)
   for (std::size_t k = 0; k < N; ++k) {
     const double h = 1 + eps_[k] + (rho_[k] > 0 ? press_[k] / rho_[k] : 0), w = rho_[k] * h * W_[k] * W_[k];
-    E[k] = w - press_[k];
-    S[k] = w * v_[k] * v_[k] + 3 * press_[k];
+    const double pm = 0.5 * B_[k] * B_[k];  // toroidal field along v: E += B^2/2, S += B^2/2
+    E[k] = w - press_[k] + pm;
+    S[k] = w * v_[k] * v_[k] + 3 * press_[k] + pm;
     Sphi[k] = w * psi_[k] * psi_[k] * v_[k];
   }
   auto solve_m1 = [&](std::vector<std::vector<double>>& u, std::vector<std::vector<double>>& du) {

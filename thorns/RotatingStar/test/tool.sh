@@ -24,6 +24,11 @@ check j_constant 0 "^Omega_e = 0\.009" "$exe" --rho-c=1.28e-3 --A2=70 --omega-c=
 check piecewise 0 "^M_komar = " "$exe" --K=100 --gammas=2,3 --rho-bounds=5e-4 --rho-c=1.28e-3 --axis-ratio=0.8 --nr=200
 check piecewise_bad 1 "Gammas need 1 density divisions" "$exe" --K=100 --gammas=2,3 --rho-c=1.28e-3 --omega=0.01 --nr=200
 check beyond_shedding 1 "beyond mass shedding" "$exe" --rho-c=1.28e-3 --omega=0.04 --nr=200
+check toroidal_field 0 "^H_over_W = 0\.2017" "$exe" --K=110 --rho-c=1.366e-3 --Km=3.746 --m=1 --nr=200
+check toroidal_gauss 0 "^B_max_gauss = 6\.13[0-9]*e\+17" "$exe" --K=110 --rho-c=1.366e-3 --Km=3.746 --nr=200
+check toroidal_too_wide 1 "toroidal field \(K_m = 6\) makes the star prolate: try r_out_factor 3" "$exe" --rho-c=1.28e-3 --Km=6 --nr=200
+check toroidal_bad_m 1 "m = 0.5 of the toroidal field must be >= 1" "$exe" --rho-c=1.28e-3 --Km=3 --m=0.5 --nr=100
+check m_without_km 2 "--m is the exponent of the toroidal field: it needs --Km" "$exe" --rho-c=1.28e-3 --m=2
 check bad_number 2 "--omega=abc: not a number" "$exe" --rho-c=1.28e-3 --omega=abc
 check unknown_option 2 "unknown option --omgea" "$exe" --rho-c=1.28e-3 --omgea=0.01
 check both_targets 2 "not both" "$exe" --rho-c=1.28e-3 --omega=0.01 --axis-ratio=0.8

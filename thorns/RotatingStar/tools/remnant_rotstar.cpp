@@ -5,6 +5,7 @@
 //   remnant-rotstar --K=100 --gammas=2,3 --rho-bounds=5e-4 --rho-c=...          piecewise polytrope
 //   remnant-rotstar --eos-table=FILE --rho-c=... [--T=MeV] [--ye=YE]             table: beta equilibrium
 //                                                                               (or fixed Ye) at T_min (or T)
+//   remnant-rotstar --K=110 --rho-c=1.366e-3 --Km=3.746 --m=1                    toroidal field (Kiuchi & Yoshida)
 //   remnant-rotstar ... --sequence=axis-ratio:1:0.6:9 --out=seq.tsv             a sequence (TSV)
 // One model prints `name = value` lines; a sequence writes one TSV row per model. Options:
 // --nr, --ntheta, --lmax, --r-out-factor, --tolerance (solver), --ye (polytrope), --code-rho (with a
@@ -36,6 +37,7 @@ struct UsageError : std::runtime_error {
 const char* kUsage =
     "usage: remnant-rotstar [--K=100] [--gamma=2 | --gammas=G0,G1,.. --rho-bounds=R1,..] [--ye=0.5] | [--eos-table=FILE [--T=MeV] [--ye=YE]]\n"
     "                       --rho-c=RHO  (--omega=OMEGA | --axis-ratio=Q | --A2=A2 --omega-c=OMEGA_C | --A2=A2 --axis-ratio=Q)\n"
+    "                       [--Km=K_M [--m=1]]  (toroidal magnetic field B = K_m (alpha^2 varpi^2 rho h)^m / (alpha varpi))\n"
     "                       [--sequence=rho-c|axis-ratio|omega:FROM:TO:N --out=FILE.tsv]\n"
     "                       [--nr=800] [--ntheta=24] [--lmax=20] [--r-out-factor=2] [--tolerance=1e-11]\n";
 
@@ -59,7 +61,7 @@ int run(int argc, char** argv) {
     opt[arg.substr(2, eq - 2)] = arg.substr(eq + 1);
   }
   static const char* known[] = {"K", "gamma", "gammas", "rho-bounds", "ye", "T", "eos-table", "rho-c", "omega", "omega-c", "A2", "axis-ratio",
-                                "sequence", "out", "nr", "ntheta", "lmax", "r-out-factor", "tolerance"};
+                                "Km", "m", "sequence", "out", "nr", "ntheta", "lmax", "r-out-factor", "tolerance"};
   for (const auto& [k, v] : opt) {
     bool ok = false;
     for (const char* n : known) ok = ok || k == n;
@@ -80,6 +82,9 @@ int run(int argc, char** argv) {
     p.omega = get("omega", 0);
   }
   p.axis_ratio = get("axis-ratio", 0);
+  if (opt.count("m") && !opt.count("Km")) throw UsageError("--m is the exponent of the toroidal field: it needs --Km");
+  p.field.K_m = get("Km", 0);
+  p.field.m = get("m", 1);
   if (p.axis_ratio != 0 && p.omega != 0) throw UsageError("give the rotation rate or --axis-ratio, not both");
   p.nr = int(get("nr", p.nr));
   p.n_theta = int(get("ntheta", p.n_theta));

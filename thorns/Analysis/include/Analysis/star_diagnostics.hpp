@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "Analysis/magnetic_diagnostics.hpp"
+#include "Analysis/rotation_diagnostics.hpp"
 #include "Analysis/collision_diagnostics.hpp"
 #include "remnant/context.hpp"
 
@@ -18,6 +22,10 @@ struct StarDiagnostics {
   // added by the atmosphere and the error policy so far, and rest_mass + outflow - source, which
   // the scheme keeps constant to round-off.
   double outflow = 0, atmosphere_source = 0, mass_budget = 0;
+  bool has_rotation = false;  // Analysis::rotation: the columns of `rotation` follow mass_budget
+  RotationDiagnostics rotation;
+  // Runs with evolved B only (the extra columns, after the rotation ones).
+  std::optional<MagneticDiagnostics> magnetic;
   // Collision diagnostics (only when collision_diagnostics_enabled): appended columns.
   bool collision = false;
   CollisionDiagnostics col;
@@ -31,9 +39,9 @@ struct History {
 
 // Collective over the grid's ranks; every rank gets the same values.
 StarDiagnostics star_diagnostics(Context& ctx);
-const char* tsv_header();
+// The columns of a hydro run, then J .. mode_m2 with rotation, then divB_max, E_mag, E_mag_pol,
+// E_mag_tor, B_max with magnetic, then rho_max_norm .. z_rho_max_lower with collision.
+std::string tsv_header(bool rotation, bool magnetic = false, bool collision = false);
 std::string tsv_line(const StarDiagnostics& d);
-// The header and line with the collision columns appended when `collision`.
-std::string tsv_header(bool collision);
 
 }  // namespace remnant::analysis

@@ -10,7 +10,8 @@
 // on radial nodes uniform to r_out and stretched far beyond (the A_ij A^ij sources outside the star
 // fall off only as r^-6 and carry ~1e-3 of the mass within 2 stellar radii),
 // and the matter from the Bernoulli integral of the rotation law (rotation_law.hpp) with the
-// central density held fixed. The target is either Omega (Omega_c) or the axis ratio r_p / r_e,
+// central density held fixed; with a toroidal magnetic field (magnetic_law.hpp) its exact extra
+// Bernoulli term and its energy and stresses in the sources. The target is either Omega (Omega_c) or the axis ratio r_p / r_e,
 // in which case Omega follows each iteration from H = 0 at r_e on the equator.
 // Bad parameters (no surface before the grid's edge, v >= 1, no convergence) throw RnsError.
 #include <memory>
@@ -18,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "RotatingStar/magnetic_law.hpp"
 #include "RotatingStar/multipoles.hpp"
 #include "RotatingStar/rotation_law.hpp"
 #include "TOV/cold_slice.hpp"
@@ -34,6 +36,7 @@ struct RnsParameters {
   double omega = 0;       // uniform Omega, or Omega_c of the j-constant law (used when axis_ratio == 0)
   double axis_ratio = 0;  // (0:1]: target r_p / r_e, the rotation rate is found
   double A2 = 70;         // j-constant law: A^2 in code units (M_sun^2); the paper's magnetized-DRNS: 70
+  ToroidalField field;    // K_m = 0: unmagnetised; the paper's magnetized-DRNS: K_m = 3, m = 1
   int nr = 800;           // uniform radial intervals to r_out (the star lies inside)
   double r_out_factor = 2.0;  // r_out = r_out_factor * (isotropic radius of the static star)
   double r_max_factor = 200;  // beyond r_out the grid stretches by 5 % per interval to r_max = this * r_out
@@ -48,6 +51,8 @@ struct RnsGlobals {
   double M_komar = 0, M_adm = 0, M_rest = 0, M_proper = 0, J = 0, T_kin = 0, W_bind = 0, T_over_W = 0;
   double r_e = 0, r_p = 0, R_circ = 0, axis_ratio = 0, omega_c = 0, omega_e = 0;
   double rho_c = 0, rho_max = 0, alpha_c = 0, psi_c = 0;
+  double H_mag = 0, H_over_W = 0;   // magnetic energy int B^2/2 psi^6 dV, and H / |W|
+  double B_max = 0;                 // max of sqrt(B_i B^i) on the solver's nodes (code units)
   double grv2 = 0, grv3 = 0;        // virial identities of the xCFC system (accuracy)
   double grv2_gr = 0, grv3_gr = 0;  // GR's identities (conformal-flatness error + accuracy)
   int iterations = 0;
@@ -57,6 +62,7 @@ struct RnsPoint {
   double rho = 0, eps = 0, press = 0, ye = 0;
   double psi = 1, alpha = 1, beta_phi = 0;  // coordinate component beta^phi
   double vel_phi = 0, W = 1;                // coordinate component v^phi of the Eulerian velocity
+  double B = 0, B_phi = 0;                  // toroidal field: sqrt(B_i B^i) and the coordinate B^phi
   bool inside = false;
 };
 
@@ -78,6 +84,8 @@ class RotatingStarModel {
 
  private:
   void solve();
+  void restart_from_tov();
+  void solve_omega_by_axis_ratio(const RnsError& direct);
   void evaluate_metric_on_grid();
   bool matter_from_bernoulli(bool ramping);
   void solve_potentials();
@@ -86,15 +94,17 @@ class RotatingStarModel {
 
   const tov::ColdSlice& slice_;
   RnsParameters p_;
+  ToroidalField field_;  // p_.field, ramped up over the first iterations
   LegendreTable leg_;
   double dr_ = 0, Hc_ = 0, C_ = 0, omega_ = 0, A2_ = 0, r_e_ = 0, r_p_ = 0;
   int nmu_ = 0, N_ = 0;        // N_: the last radial node
+  std::vector<double> tov_psi_, tov_apsi_;  // the first guess's monopoles (restarts)
   std::vector<double> r_;      // radial nodes: uniform (dr_) to r_out, then stretched to r_max
   // Multipole radial functions [l][i]: psi - 1 and alpha psi - 1 (even l), b / r = sum b_l / r P_l'
   // with b = r sin(theta) beta^phi and x likewise for X (odd l); with r-derivatives.
   std::vector<std::vector<double>> psi_l_, dpsi_l_, apsi_l_, dapsi_l_, b_l_, db_l_, x_l_, dx_l_;
   // Grid fields [i * nmu + j] on the Gauss rays.
-  std::vector<double> psi_, apsi_, bphi_, rho_, eps_, press_, ye_, W_, v_, omega_f_, aa_;
+  std::vector<double> psi_, apsi_, bphi_, rho_, eps_, press_, ye_, W_, v_, omega_f_, aa_, B_;
   std::vector<double> surface_;  // surface radius at mu = k / (size - 1), for at()
   RnsGlobals g_;
 };

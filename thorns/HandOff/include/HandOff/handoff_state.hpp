@@ -1,0 +1,42 @@
+#pragma once
+// What HandOff keeps between its scheduled functions (published as the service "HandOff::state"):
+// the 3D data (read once, also when the Grid's initial regrid runs `initial` again), the target,
+// the integrals before and after, and the report's numbers (tests read them).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "HandOff/source_data.hpp"
+#include "HandOff/target_domain.hpp"
+
+namespace remnant::handoff {
+
+struct Totals {
+  double rest_mass = 0, angular_momentum = 0, energy = 0;
+};
+
+struct HandOffReport {
+  Totals source_all, source_covered, source_grid;  // 3D: all data, the grid unfolded, the grid itself
+  double outside_fraction = 0;
+  double raw_rest_mass = 0;       // the grid's rest mass of the interpolated D, before normalisation
+  double normalisation = 1;       // factor applied to the imported conserved variables
+  Totals imported;                // the grid's integrals of the imported conserved variables
+  Totals after;                   // the grid's integrals after the metric solve and the recovery
+  double atmosphere_initial_mass = 0;  // the atmosphere's rest mass in cells the data leave empty
+  double atmosphere_mass = 0;     // rest mass added by the atmosphere and error policy since import
+  long long cells = 0, cells_without_data = 0, cells_partly_covered = 0;
+  int max_phi_samples = 1;
+  bool has_metric = false, has_lapse = false;
+  double psi4_max_rel = 0, psi4_mean_rel = 0, alpha_max_rel = 0, alpha_mean_rel = 0;  // inside the matter
+  double psi4_c = 0, gamma13_c = 0, alpha_c = 0, alpha3d_c = 0, rho_c = 0;
+  bool after_done = false;
+};
+
+struct HandOffState {
+  std::shared_ptr<SourceData> source;
+  TargetDomain target;
+  std::vector<std::string> notes;
+  HandOffReport report;
+};
+
+}  // namespace remnant::handoff

@@ -1,0 +1,80 @@
+#include "read_source.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "EOS/eos.hpp"
+#include "HandOff/carpet_reader.hpp"
+#include "HandOff/remnant_reader.hpp"
+#include "source_quantities.hpp"
+
+namespace remnant::handoff {
+namespace {
+
+// A magnetic field in the data: an error unless the user lets HandOff drop it.
+void check_magnetic_field(const Context& ctx, SourceData& src, std::vector<std::string>& notes) {
+  double bmax = 0;
+  for (const auto& L : src.levels)
+    for (int c = 0; c < 3; ++c) {
+      auto it = L.fields.find("Bvec[" + std::to_string(c) + "]");
+      if (it == L.fields.end()) continue;
+      for (std::size_t q = 0; q < L.size(); ++q)
+        if (L.valid[q]) bmax = std::max(bmax, std::abs(it->second[q]));
+    }
+  if (bmax > 0 && !ctx.param<bool>("HandOff", "ignore_magnetic_field")) {
+    std::string file = "the data";
+    for (int c = 2; c >= 0; --c)
+      if (src.file_of.count("Bvec[" + std::to_string(c) + "]")) file = src.file_of.at("Bvec[" + std::to_string(c) + "]");
+    // A face-centred group is a staggered magnetic field (constrained transport).
+    std::string evolved;
+    for (const auto& g : ctx.vars().groups())
+      if (g.centering == Centering::face_x || g.centering == Centering::face_y || g.centering == Centering::face_z)
+        evolved = g.full_name();
+    throw RunError("HandOff: " + file + ": the data hold a magnetic field (HydroBase::Bvec, max |B| = " + std::to_string(bmax) +
+                   "), but HandOff does not import magnetic fields yet" +
+                   (evolved.empty() ? std::string(" and this run evolves none")
+                                    : " (this run evolves one, " + evolved + ", which would start from zero)") +
+                   "; set HandOff::ignore_magnetic_field = true to hand off the fluid alone");
+  }
+  if (bmax > 0) notes.push_back("the data's magnetic field (max |B| = " + std::to_string(bmax) + ") is dropped (HandOff::ignore_magnetic_field)");
+  for (auto& L : src.levels)
+    for (int c = 0; c < 3; ++c) L.fields.erase("Bvec[" + std::to_string(c) + "]");
+}
+
+}  // namespace
+
+std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::string>& notes) {
+  const auto files = expand_file_patterns(ctx.param<std::vector<std::string>>("HandOff", "files"));
+  const auto& format = ctx.param<std::string>("HandOff", "format");
+  auto src = std::make_shared<SourceData>();
+  std::array<bool, 3> mirrors{false, false, false};
+  for (const auto& r : ctx.param<std::vector<std::string>>("HandOff", "reflection")) mirrors[static_cast<std::size_t>(r[0] - 'x')] = true;
+  if (format == "carpet") {
+    CarpetOptions o;
+    o.files = files;
+    o.iteration = ctx.param<std::int64_t>("HandOff", "iteration");
+    o.variables = {"rho", "press", "eps", "temperature", "Ye", "vel[0]", "vel[1]", "vel[2]", "Bvec[0]", "Bvec[1]", "Bvec[2]",
+                   "alp", "gxx", "gxy", "gxz", "gyy", "gyz", "gzz"};
+    o.required = {"rho"};
+    o.reflection = mirrors;
+    o.buffer_zones = static_cast<int>(ctx.param<std::int64_t>("HandOff", "buffer_zones"));
+    *src = read_carpet(o);
+  } else {
+    *src = read_remnant_volume(files, mirrors);
+  }
+  check_magnetic_field(ctx, *src, notes);
+  MissingPolicy policy;
+  policy.from_eos = ctx.param<std::string>("HandOff", "missing_variables") == "from_eos";
+  policy.ye = ctx.param<double>("HandOff", "ye");
+  policy.eos_tolerance = ctx.param<double>("HandOff", "eos_tolerance");
+  src->has_metric = src->has("gxx");
+  src->has_lapse = src->has("alp");
+  for (auto& n : complete_source(*src, ctx.service<eos::EOS>("eos"), policy)) notes.push_back(std::move(n));
+  for (auto& n : add_conserved(*src)) notes.push_back(std::move(n));
+  // Only what the hand-off samples stays in memory (every rank holds all the data).
+  for (auto& L : src->levels)
+    for (const char* f : {"press", "temperature", "gxx", "gxy", "gxz", "gyy", "gyz", "gzz"}) L.fields.erase(f);
+  return src;
+}
+
+}  // namespace remnant::handoff

@@ -1,0 +1,23 @@
+#!/bin/bash
+# End to end on the command line: remnant-handoff-testdata writes BU0 as 3D Carpet data, remnant runs
+# parfiles/handoff_tov_cyl_2d.yaml on it (hand-off only), the report and the profiles are written,
+# and utils/plot_handoff reads the profiles; a wrong file pattern fails with a message naming it.
+# usage: cli_handoff.sh REMNANT_EXE TESTDATA_EXE SOURCE_DIR
+set -u
+exe=$1 tool=$2 src=$3
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+cd "$tmp" || exit 1
+fail() { echo "FAIL: $*"; exit 1; }
+"$tool" --out=handoff_data > tool.log 2>&1 || fail "remnant-handoff-testdata: $(cat tool.log)"
+[ -f handoff_data/tov3d.file_0.h5 ] && [ -f handoff_data/tov3d.file_1.h5 ] || fail "no Carpet files written"
+"$exe" "$src/parfiles/handoff_tov_cyl_2d.yaml" MoL::final_time=0 Flesh::out_dir=out > run.log 2>&1 || fail "the hand-off run failed: $(tail -5 run.log)"
+grep -q "^imported_rest_mass" out/handoff_report.txt || fail "no report"
+grep -q "HandOff: note: no HydroBase::Y_e" run.log || fail "the missing Ye is not noted in the log"
+python3 "$src/utils/plot_handoff" --no-plot out/handoff_profiles.tsv > plot.log 2>&1 || fail "plot_handoff: $(cat plot.log)"
+grep -q "^line 0: 48 cells" plot.log && grep -q "^line 1: 48 cells" plot.log || fail "plot_handoff: $(cat plot.log)"
+if "$exe" "$src/parfiles/handoff_tov_cyl_2d.yaml" MoL::final_time=0 Flesh::out_dir=out2 'HandOff::files=[nowhere/*.h5]' > bad.log 2>&1; then
+  fail "a pattern that matches nothing did not fail"
+fi
+grep -q "nowhere/\*.h5" bad.log || fail "the error does not name the pattern: $(tail -3 bad.log)"
+echo "ok: $(grep '^normalisation' out/handoff_report.txt)"
