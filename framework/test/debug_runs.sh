@@ -26,5 +26,13 @@ run rns_cyl_2d rns_uniform_cyl_2d.yaml MoL::max_iterations=3 RotatingStar::nr=20
 run shocktube shocktube_mm1.yaml MoL::max_iterations=3
 run wavetoy_3d wavetoy_3d.yaml MoL::max_iterations=3
 run advection_amr advection_cartesian_2d.yaml MoL::max_iterations=3
+ls220="$src/../shared/eos/SRO_LS220_157r_89t_49y.h5"
+if [ -f "$ls220" ]; then
+  run headon_cyl_2d headon_cyl_2d.yaml MoL::max_iterations=3 "EOS::table_file=$ls220"
+  run headon_3d headon_3d.yaml MoL::max_iterations=3 Grid::max_level=1 "HeadOn::refine_radii=[12]" Grid::regrid_every=2 \
+    "EOS::table_file=$ls220"
+else
+  echo "skip headon_cyl_2d, headon_3d: $ls220 is missing"
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]

@@ -1,4 +1,5 @@
 // Analysis_Star: diagnostics every Analysis::every iterations, appended to <out_dir>/analysis.tsv by rank 0.
+#include <cmath>
 #include <fstream>
 #include <memory>
 
@@ -10,6 +11,19 @@
 
 namespace remnant::analysis {
 namespace {
+
+// The collision columns: rho_max normalised by the first row's, and h+ from the change of the
+// momentum moment since the previous row (after a restart the first row has neither: 0 and 1).
+void add_collision_columns(Context& ctx, const History& history, StarDiagnostics& d) {
+  d.collision = true;
+  d.col = collision_diagnostics(ctx);
+  d.rho_max_norm = history.rows.empty() ? 1.0 : d.rho_max / history.rows.front().rho_max;
+  if (!history.rows.empty() && d.time > history.rows.back().time) {
+    const double s = std::sin(ctx.param<double>("Analysis", "gw_theta"));
+    d.h_plus = s * s / ctx.param<double>("Analysis", "gw_distance") * (d.col.quad_dI - history.rows.back().col.quad_dI) /
+               (d.time - history.rows.back().time);
+  }
+}
 
 void magnetic(Context& ctx) {
   if (!ctx.has_service("Analysis::magnetic")) ctx.publish("Analysis::magnetic", std::make_shared<MagneticDiagnostics>());
@@ -28,9 +42,10 @@ void star(Context& ctx) {
     d.magnetic = m;
     if (d.has_rotation) add_magnetic_terms(d.rotation, ctx.service<double>("Analysis::rotation_magnetic_now"), m.E_mag);
   }
+  if (collision_diagnostics_enabled(ctx)) add_collision_columns(ctx, history, d);
   if (ctx.rank() == 0) {
     const std::string path = ctx.out_dir() + "/analysis.tsv";
-    if (history.rows.empty()) start_or_resume_tsv_file(ctx, path, tsv_header(d.has_rotation, with_b));
+    if (history.rows.empty()) start_or_resume_tsv_file(ctx, path, tsv_header(d.has_rotation, with_b, d.collision));
     std::ofstream out(path, std::ios::app);
     out << tsv_line(d);
     if (!out) throw RunError("Analysis: cannot write " + path);

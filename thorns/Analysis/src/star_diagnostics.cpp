@@ -78,16 +78,19 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   return d;
 }
 
-std::string tsv_header(bool rotation, bool magnetic) {
+std::string tsv_header(bool rotation, bool magnetic, bool collision) {
   std::string h = "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
                   "atmosphere_source\tmass_budget";
   if (rotation) h += "\tJ\tT_over_W\tOmega_c\tM_komar\tmode_m1\tmode_m2";
   if (magnetic) h += "\tdivB_max\tE_mag\tE_mag_pol\tE_mag_tor\tB_max";
+  if (collision)
+    h += "\trho_max_norm\tM_rest_total\tM_adm\tM_komar_total\tquad_I\tquad_dI\th_plus\tz_rho_max_upper\t"
+         "z_rho_max_lower";
   return h + "\n";
 }
 
 std::string tsv_line(const StarDiagnostics& d) {
-  char b[1024];
+  char b[1536];
   int n = std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g",
                         static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
                         d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
@@ -100,6 +103,12 @@ std::string tsv_line(const StarDiagnostics& d) {
     const MagneticDiagnostics& m = *d.magnetic;
     n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", m.divB_max, m.E_mag,
                        m.E_mag_pol, m.E_mag_tor, m.B_max_gauss);
+  }
+  if (d.collision) {
+    const CollisionDiagnostics& c = d.col;
+    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g",
+                       d.rho_max_norm, c.M_rest, c.M_adm, c.M_komar, c.quad_I, c.quad_dI, d.h_plus, c.z_max_upper,
+                       c.z_max_lower);
   }
   return std::string(b) + "\n";
 }

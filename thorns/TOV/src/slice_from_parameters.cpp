@@ -1,10 +1,7 @@
 #include "slice_from_parameters.hpp"
 
-#include <cmath>
-#include <vector>
-
-#include "EOS/beta_equilibrium.hpp"
 #include "EOS/eos.hpp"
+#include "TOV/table_slice.hpp"
 
 namespace remnant::tov {
 
@@ -14,14 +11,7 @@ std::unique_ptr<ColdSlice> slice_from_parameters(const Context& ctx) {
                            ctx.param<double>("TOV", "ye"));
   const auto* table = ctx.service<eos::EOS>("eos").tabulated();
   if (!table) throw RunError("TOV::eos_slice = tabulated_beta needs EOS::type = tabulated");
-  // A fine logarithmic density grid over the table, beta equilibrium at T_min.
-  const auto& b = table->bounds();
-  std::vector<double> rhos;
-  const int n = 800;
-  for (int i = 0; i < n; ++i) rhos.push_back(b.rho_min * std::pow(b.rho_max / b.rho_min, double(i) / (n - 1)));
-  rhos.back() = b.rho_max;
-  const eos::BetaSlice s = eos::beta_equilibrium_slice(*table, b.T_min, rhos);
-  return tabulated_slice(s.rho, s.press, s.eps, s.ye);
+  return cold_beta_slice(*table);
 }
 
 DensityRange slice_density_range(const Context& ctx) {

@@ -9,6 +9,7 @@
 
 #include "Analysis/magnetic_diagnostics.hpp"
 #include "Analysis/rotation_diagnostics.hpp"
+#include "Analysis/collision_diagnostics.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::analysis {
@@ -25,6 +26,11 @@ struct StarDiagnostics {
   RotationDiagnostics rotation;
   // Runs with evolved B only (the extra columns, after the rotation ones).
   std::optional<MagneticDiagnostics> magnetic;
+  // Collision diagnostics (only when collision_diagnostics_enabled): appended columns.
+  bool collision = false;
+  CollisionDiagnostics col;
+  double rho_max_norm = 0;  // rho_max / rho_max of the first row
+  double h_plus = 0;        // sin^2(theta) / D * d(quad_dI)/dt, backward difference to the previous row (0 on the first)
 };
 
 struct History {
@@ -34,8 +40,8 @@ struct History {
 // Collective over the grid's ranks; every rank gets the same values.
 StarDiagnostics star_diagnostics(Context& ctx);
 // The columns of a hydro run, then J .. mode_m2 with rotation, then divB_max, E_mag, E_mag_pol,
-// E_mag_tor, B_max with magnetic.
-std::string tsv_header(bool rotation, bool magnetic = false);
+// E_mag_tor, B_max with magnetic, then rho_max_norm .. z_rho_max_lower with collision.
+std::string tsv_header(bool rotation, bool magnetic = false, bool collision = false);
 std::string tsv_line(const StarDiagnostics& d);
 
 }  // namespace remnant::analysis
