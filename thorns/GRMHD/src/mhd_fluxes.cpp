@@ -13,6 +13,7 @@
 
 #include "GRMHD/face_thermo.hpp"
 #include "GRMHD/valencia_mhd.hpp"
+#include "HydroBase/magnetic_field.hpp"
 #include "line_scratch.hpp"
 #include "remnant/cell_geometry.hpp"
 
@@ -29,6 +30,35 @@ Point3 scale_factors(CoordinateSystem cs, const Point3& x, double sin_theta) {
     case CoordinateSystem::spherical: return {1, x[0], x[0] * sin_theta};
   }
   return {1, 1, 1};
+}
+
+// The momentum flux F^d_j of a smooth field scales as h_j / h_d (T^d_j = h_j / h_d times orthonormal
+// components): the exact face mean of that factor (weight sqrt f over the face of cell idx normal to
+// d) over its value at the face centre x. The flux divergence with exact areas then sees the face
+// means, which the geometric sources (exact cell averages) balance: O(1) near the origin and the
+// axis, where the factor varies over the face by O(1) (1/r on a theta face: 3/(2 dr) vs 4/(3 dr)).
+std::array<double, 3> momentum_flux_weights(const Block& b, int d, const int* idx, const Point3& x) {
+  auto lo = [&](int e) { return b.face_coordinate(e, idx[e]); };
+  auto hi = [&](int e) { return b.face_coordinate(e, idx[e] + 1); };
+  auto checked = [](double w) { return std::isfinite(w) && w > 0 ? w : 1.0; };
+  std::array<double, 3> c{1.0, 1.0, 1.0};
+  if (b.coordinates == CoordinateSystem::cylindrical) {  // (R, z, phi), h = (1, 1, R), sqrt f = R
+    const double r0 = lo(0), r1 = hi(0);
+    if (d == 1) c[2] = checked((r1 * r1 * r1 - r0 * r0 * r0) / 3.0 / (0.5 * (r1 * r1 - r0 * r0)) / x[0]);
+    if (d == 2) c[0] = c[1] = checked((r1 - r0) / (0.5 * (r1 * r1 - r0 * r0)) * x[0]);
+  } else if (b.coordinates == CoordinateSystem::spherical) {  // h = (1, r, r sin theta), sqrt f = r^2 sin theta
+    const double r0 = lo(0), r1 = hi(0), t0 = lo(1), t1 = hi(1);
+    const double int_sin = std::cos(t0) - std::cos(t1);
+    const double inv_r = checked(0.5 * (r1 * r1 - r0 * r0) / ((r1 * r1 * r1 - r0 * r0 * r0) / 3.0) * x[0]);
+    const double st = std::sin(x[1]);
+    if (d == 0) c[2] = checked(0.5 * ((t1 - t0) - 0.5 * (std::sin(2 * t1) - std::sin(2 * t0))) / int_sin / st);
+    if (d == 1) c[0] = inv_r;
+    if (d == 2) {
+      c[1] = checked((t1 - t0) / int_sin * st);
+      c[0] = inv_r * c[1];
+    }
+  }
+  return c;
 }
 
 // rho, W v^1..3, thermal, Ye, B^b, B^c.
@@ -107,6 +137,17 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
       for (int q = 0; q < kNumRecMhd; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
 
       Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
+      // The face field is the sqrt(f)-weighted face mean of B^d; the face states need the point value
+      // at the face centre: the orthonormal mean (orthonormal_factor) over the scale factor h_d there.
+      // They differ by O(1) in the first cells (B^theta ~ 1/r weighted with r^2: 3/(2 dr) instead of
+      // 2/dr), which unbalanced the magnetic stress of a uniform field at the origin.
+      double normal_factor = 1.0;
+      if (!cartesian) {
+        const double h = scale_factors(cs, x, trig.sin_centre(idx[1]))[d];
+        if (h != 0) normal_factor = hydrobase::orthonormal_factor(b, d, idx) / h;
+      }
+      const std::array<double, 3> flux_weight =
+          cartesian ? std::array<double, 3>{1.0, 1.0, 1.0} : momentum_flux_weights(b, d, idx, x);
       std::array<double, 3> fd{1.0, 1.0, 1.0};
       for (int f = 0; f <= n; ++f) {
         const double psi = face_value(s.metric_faces, L.met[Metric::idx::psi], f);
@@ -131,7 +172,7 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
         complete_face_thermo(eos, sl, L.left[4][f]);
         complete_face_thermo(eos, sr, L.right[4][f]);
         std::array<double, 3> Bl, Br;
-        Bl[d] = Br[d] = bn.origin[fbase + f * fstride] / psi6;
+        Bl[d] = Br[d] = bn.origin[fbase + f * fstride] * normal_factor / psi6;
         Bl[next] = L.left[6][f];
         Br[next] = L.right[6][f];
         Bl[prev] = L.left[7][f];
@@ -155,6 +196,7 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
         characteristic_speeds_mhd(d, sr, mr, pm, lmr, lpr);
         hll_flux_n<kNumMhd>(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
         const std::ptrdiff_t fo = fbase + f * fstride;
+        for (int j = 0; j < 3; ++j) fh[kS1 + j] *= flux_weight[j];
         for (int c = 0; c < kNumCons; ++c) fout[c].origin[fo] = fh[c] * psi6;
         ct[kAlphaPlus].origin[fo] = std::max({0.0, lpl, lpr});
         ct[kAlphaMinus].origin[fo] = -std::min({0.0, lml, lmr});
