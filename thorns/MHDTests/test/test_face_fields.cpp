@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "diagnostics.hpp"
 #include "face_fields.hpp"
 #include "problems.hpp"
 
@@ -149,4 +150,43 @@ TEST(MHDTestsFaceFields, PlanarRiemannFieldIn1DAnd2D) {
     if (dim == 2) EXPECT_EQ(f.by(b.n[0] - 1, b.n[1], 0), -0.7) << "upper y faces of a 2D block";
     EXPECT_EQ(f.relative_divergence(), 0.0) << dim << "D";
   }
+}
+
+// The per-cell diagnostics: round-off for potential fields, O(1) for a face that breaks the
+// divergence (so the TSV maximum detects it), and b2 integrating to the loop's energy.
+TEST(MHDTestsFaceFields, DiagnosticsSeeABrokenFace) {
+  FieldLoopParams p;
+  p.profile = FieldLoopParams::Profile::smooth;
+  FaceBlock f(2, {128, 64, 1}, {-1, -0.5, -0.5}, {1, 0.5, 0.5});
+  faces_from_potential(*f.block, [&](double x, double y) { return field_loop_potential(p, x, y); }, f.bx, f.by, f.bz);
+  // Two cell groups on a second block sharing the geometry: reuse the face registry's block layout.
+  VariableRegistry cells;
+  for (const char* n : {"divB", "b2"}) {
+    VariableGroupSpec s;
+    s.thorn = "Test";
+    s.name = n;
+    s.components = expand_tensor(TensorKind::scalar, n);
+    cells.add(s);
+  }
+  const Block& b = *f.block;
+  Block out(0, 0, {0, 0, 0}, b.n, b.ng, b.lo, b.dx, cells);
+  out.set_geometry(CoordinateSystem::cartesian, b.lo);
+  const Field div = out.field(0, 0), b2 = out.field(1, 0);
+  auto max_div = [&] {
+    double m = 0;
+    for (int j = 0; j < b.n[1]; ++j)
+      for (int i = 0; i < b.n[0]; ++i) m = std::max(m, div(i, j, 0));
+    return m;
+  };
+  cell_diagnostics(*f.block, f.bx, f.by, f.bz, div, b2);
+  const double clean = max_div();
+  double energy = 0;
+  for (int j = 0; j < b.n[1]; ++j)
+    for (int i = 0; i < b.n[0]; ++i) energy += b2(i, j, 0) * b.cell_volume(i, j, 0);
+  EXPECT_LE(clean, 1e-13);
+  EXPECT_NEAR(energy / field_loop_magnetic_energy(p), 1.0, 1e-2);  // 6.5e-3 at 128 x 64
+  f.bx(64, 32, 0) *= 1.01;  // a 1 % error on one face of the loop
+  cell_diagnostics(*f.block, f.bx, f.by, f.bz, div, b2);
+  std::printf("divB diagnostic: clean %.2e, one face off by 1 %%: %.2e\n", clean, max_div());
+  EXPECT_GT(max_div(), 1e-4);
 }
