@@ -221,11 +221,12 @@ Simulation::Simulation(const ThornCatalog& catalog, const SimulationOptions& opt
     const ThornSpec* s = catalog.find(t);
     specs.push_back(s);
     for (const auto& p : s->parameters) params_.declare(p);
-    for (const auto& v : s->variables) vars_.add(v);
   }
   std::vector<std::string> all_names{"Flesh"};
   for (const auto& n : compiled) all_names.push_back(n);
   apply_parfile(pf, all_names, with_flesh, params_);
+  // Groups with an `if:` get storage only when it holds; their parameter is fixed for the run.
+  for (const ThornSpec* s : specs) register_variable_groups(*s, params_, vars_);
   vars_.resolve_rhs();
   scheduler_ = std::make_unique<Scheduler>(specs, vars_, params_, catalog.implementations());
   scheduler_->set_debug(params_.get<bool>("Flesh", "debug"));

@@ -25,7 +25,9 @@ struct Access {
   std::set<int> reads, writes;
 };
 
-std::vector<int> resolve_access(const VariableAccess& a, const std::string& thorn, const VariableRegistry& vars) {
+std::vector<int> resolve_access(const VariableAccess& a, const ScheduleItem& item, const VariableRegistry& vars,
+                                const Parameters& params) {
+  const std::string& thorn = item.thorn;
   if (a.group == "@evolved") return vars.evolved();
   if (a.group == "@all") {
     std::vector<int> out;
@@ -41,6 +43,15 @@ std::vector<int> resolve_access(const VariableAccess& a, const std::string& thor
   }
   const int id = vars.find(a.group, thorn);
   if (id < 0) {
+    // A group whose `if:` is false: fine for an item that cannot run in this run either.
+    if (const VariableGroupSpec* off = vars.without_storage(a.group, thorn)) {
+      const bool item_off = !item.condition.empty() && !condition_is_steerable(item.condition, params) &&
+                            !condition_holds_now(item.condition, params, item.where);
+      if (item_off) return {};
+      throw InputError(a.where, "'" + item.name + "' accesses " + off->full_name() + ", which has no storage in this run " +
+                                    "(its 'if: " + off->condition.text + "' is false); give '" + item.name +
+                                    "' an 'if:' on a non-steerable parameter that is false whenever the group is absent");
+    }
     std::vector<std::string> names;
     for (const auto& g : vars.groups()) names.push_back(g.full_name());
     std::string msg = "unknown variable group '" + a.group + "'";
@@ -110,9 +121,9 @@ std::vector<ScheduleNode> Scheduler::build_container(const std::string& containe
   std::function<Access(const ScheduleItem*)> access_of = [&](const ScheduleItem* it) {
     Access a;
     for (const auto& r : it->reads)
-      for (int id : resolve_access(r, it->thorn, vars)) a.reads.insert(id);
+      for (int id : resolve_access(r, *it, vars, params)) a.reads.insert(id);
     for (const auto& w : it->writes)
-      for (int id : resolve_access(w, it->thorn, vars)) a.writes.insert(id);
+      for (int id : resolve_access(w, *it, vars, params)) a.writes.insert(id);
     if (it->is_group)
       for (const ScheduleItem* child : by_container_[it->name]) {
         Access c = access_of(child);
@@ -253,12 +264,12 @@ std::vector<ScheduleNode> Scheduler::build_container(const std::string& containe
         throw InputError(it->where, "function " + key + " is declared but thorn " + it->thorn + " registers no implementation");
       node.fn = f->second;
       for (const auto& r : it->reads)
-        for (int id : resolve_access(r, it->thorn, vars)) {
+        for (int id : resolve_access(r, *it, vars, params)) {
           node.reads.push_back(id);
           if (r.region == Region::everywhere) node.reads_everywhere.push_back(id);
         }
       for (const auto& w : it->writes)
-        for (int id : resolve_access(w, it->thorn, vars))
+        for (int id : resolve_access(w, *it, vars, params))
           (w.region == Region::everywhere ? node.writes_everywhere : node.writes_interior).push_back(id);
       node.declared = node.reads;
       node.declared.insert(node.declared.end(), node.writes_interior.begin(), node.writes_interior.end());

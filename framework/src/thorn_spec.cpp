@@ -72,7 +72,7 @@ struct Reader {
   }
 
   VariableGroupSpec variable(const YAML::Node& n, const std::string& thorn) const {
-    check_keys(n, {"group", "centering", "tensor", "basis", "role", "rhs", "checkpoint", "prolongation", "description"},
+    check_keys(n, {"group", "centering", "tensor", "basis", "role", "rhs", "checkpoint", "prolongation", "if", "description"},
                "a variable group");
     VariableGroupSpec g;
     g.thorn = thorn;
@@ -129,6 +129,7 @@ struct Reader {
         throw InputError(at(n["basis"]), "basis '" + b + "' is not one of: coordinate, cartesian");
       g.cartesian_basis = b == "cartesian";
     }
+    if (n["if"]) g.condition = condition(n["if"]);
     if (n["description"]) g.description = str(n["description"], "description");
     return g;
   }
@@ -347,6 +348,16 @@ ThornSpec parse_thorn_spec(const std::string& text, const std::string& path) {
       throw InputError(t.schedule.back().where, "'" + t.schedule.back().name + "' is scheduled twice in " + t.name);
   }
   return t;
+}
+
+void register_variable_groups(const ThornSpec& spec, const Parameters& params, VariableRegistry& vars) {
+  for (const auto& v : spec.variables) {
+    if (!v.condition.empty() && condition_is_steerable(v.condition, params))
+      throw InputError(v.where, "group '" + v.name + "' has storage 'if: " + v.condition.text +
+                                    "', whose parameter is steerable; conditions of storage need 'steerable: never'");
+    if (condition_holds_now(v.condition, params, v.where)) vars.add(v);
+    else vars.add_without_storage(v);
+  }
 }
 
 }  // namespace remnant

@@ -110,6 +110,17 @@ int VariableRegistry::find(const std::string& name, const std::string& thorn) co
   return -1;
 }
 
+void VariableRegistry::add_without_storage(VariableGroupSpec spec) {
+  const std::string key = spec.full_name();
+  without_storage_.emplace(key, std::move(spec));
+}
+
+const VariableGroupSpec* VariableRegistry::without_storage(const std::string& name, const std::string& thorn) const {
+  const std::string key = name.find("::") == std::string::npos && !thorn.empty() ? thorn + "::" + name : name;
+  auto it = without_storage_.find(key);
+  return it == without_storage_.end() ? nullptr : &it->second;
+}
+
 void VariableRegistry::resolve_rhs() {
   for (auto& g : groups_) {
     if (g.rhs.empty()) continue;

@@ -4,6 +4,10 @@
 
 #include <limits>
 
+#include <yaml-cpp/yaml.h>
+
+#include "remnant/thorn_spec.hpp"
+
 #include "test_helpers.hpp"
 
 using namespace remnant;
@@ -41,12 +45,21 @@ struct Harness {
   ImplementationTable impl;
   std::vector<std::string> calls;
 
-  explicit Harness(std::initializer_list<const char*> yamls) {
+  // `settings`: parameter values applied before the groups get storage, as a parfile would.
+  explicit Harness(std::initializer_list<const char*> yamls,
+                   std::initializer_list<std::pair<const char*, const char*>> settings = {}) {
     int i = 0;
     for (const char* y : yamls) specs.push_back(parse_thorn_spec(y, "thorn" + std::to_string(i++) + ".yaml"));
-    for (const auto& s : specs) {
-      for (const auto& v : s.variables) vars.add(v);
+    for (const auto& s : specs)
       for (const auto& p : s.parameters) params.declare(p);
+    for (const auto& [name, value] : settings) {
+      const std::string full = name;
+      const auto sep = full.find("::");
+      const std::string thorn = full.substr(0, sep), param = full.substr(sep + 2);
+      params.set(thorn, param, parse_param_value(*params.find(thorn, param), YAML::Node(std::string(value)), {}), {});
+    }
+    for (const auto& s : specs) {
+      register_variable_groups(s, params, vars);
       for (const auto& it : s.schedule)
         if (!it.is_group) {
           const std::string name = it.thorn + "::" + it.name;
@@ -385,4 +398,55 @@ schedule:
   s.set_nan_check(true);
   expect_error<RunError>([&] { s.run_bin("initial", ctx); },
                          {"D::Bad wrote NaN into 1 interior points of D::u", "component u at cell (2, 0, 0)"});
+}
+
+// A group with `if:` has storage only when its condition holds; an item that touches it must be
+// switched off by its own condition whenever the group is absent.
+const char* kConditionalStorage = R"(thorn: M
+parameters:
+  - {name: field, type: keyword, values: [none, evolved], default: none, steerable: never, description: d}
+  - {name: tuned, type: bool, default: false, steerable: always, description: d}
+variables:
+  - {group: u, tensor: [scalar u]}
+  - {group: B, tensor: [scalar B], if: "M::field == evolved"}
+schedule:
+  - function: Hydro
+    in: analysis
+    writes: [u]
+    description: always
+  - function: Magnetic
+    in: analysis
+    if: "M::field == evolved"
+    reads: [u]
+    writes: [B]
+    description: only with storage for B
+)";
+
+TEST(Scheduler, GroupsWithAConditionHaveStorageOnlyWhenItHolds) {
+  {
+    Harness h({kConditionalStorage});
+    EXPECT_EQ(h.vars.find("M::B"), -1);
+    ASSERT_NE(h.vars.without_storage("M::B"), nullptr);
+    Scheduler s = h.make();  // Magnetic is off: its access to B is not an error
+  }
+  {
+    Harness h({kConditionalStorage}, {{"M::field", "evolved"}});
+    EXPECT_GE(h.vars.find("M::B"), 0);
+    Scheduler s = h.make();
+  }
+  // An item that runs while the group is absent is refused, naming both.
+  const std::string unguarded = std::string(kConditionalStorage) + R"(  - function: Reader
+    in: analysis
+    reads: [B]
+    description: no condition
+)";
+  expect_error<InputError>([&] { Harness h({unguarded.c_str()}); h.make(); }, {"Reader", "M::B", "no storage", "M::field == evolved"});
+  // A storage condition on a steerable parameter is refused at the group's line.
+  const std::string steerable = std::string(R"(thorn: S
+parameters:
+  - {name: tuned, type: bool, default: false, steerable: always, description: d}
+variables:
+  - {group: x, tensor: [scalar x], if: "S::tuned"}
+)");
+  expect_error<InputError>([&] { Harness h({steerable.c_str()}); }, {"thorn0.yaml", "steerable: never"});
 }

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "remnant/condition.hpp"
 #include "remnant/error.hpp"
 #include "remnant/parameters.hpp"
 #include "remnant/variables.hpp"
@@ -25,14 +26,6 @@ struct OrderingRef {
 };
 
 // `if:` condition on a parameter: "Thorn::p" (bool true), "!Thorn::p", "Thorn::p == v", "!=".
-struct Condition {
-  std::string thorn, param;
-  enum class Op { is_true, is_false, equal, not_equal } op = Op::is_true;
-  std::string value;       // as YAML scalar text for equal/not_equal
-  std::string text;
-  bool empty() const { return param.empty(); }
-};
-
 struct ScheduleItem {
   std::string thorn;
   bool is_group = false;
@@ -62,6 +55,11 @@ struct ThornSpec {
 
 // Parses and checks a thorn.yaml text; errors name yaml_path:line:col.
 ThornSpec parse_thorn_spec(const std::string& yaml_text, const std::string& yaml_path);
+
+// Adds the thorn's variable groups to the registry once the parfile is applied: a group whose
+// `if:` is false gets no storage (recorded with add_without_storage). Storage conditions must
+// name a parameter with 'steerable: never' (InputError at the group's line otherwise).
+void register_variable_groups(const ThornSpec& spec, const Parameters& params, VariableRegistry& vars);
 
 const std::vector<std::string>& standard_bins();
 bool is_standard_bin(const std::string& name);

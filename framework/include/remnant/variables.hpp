@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "remnant/condition.hpp"
 #include "remnant/error.hpp"
 
 namespace remnant {
@@ -47,6 +48,8 @@ struct VariableGroupSpec {
   // Components of vectors and tensors along the Cartesian axes (x, y, z) rather than the grid's
   // coordinate basis (thorn.yaml `basis: cartesian`): symmetry images take Cartesian parities.
   bool cartesian_basis = false;
+  // thorn.yaml `if:`: the group has storage only when this holds at start-up (empty: always).
+  Condition condition;
   std::string description;
   SourceLocation where;
 
@@ -69,10 +72,15 @@ class VariableRegistry {
   // Resolves rhs names to ids; throws InputError for an unknown rhs group.
   void resolve_rhs();
   std::vector<int> evolved() const;
+  // Groups declared with an `if:` that is false in this run: they have no storage. Kept so that
+  // an access to one can be told apart from a typo.
+  void add_without_storage(VariableGroupSpec spec);
+  const VariableGroupSpec* without_storage(const std::string& name, const std::string& thorn = "") const;
 
  private:
   std::vector<VariableGroupSpec> groups_;
   std::map<std::string, int> by_name_;
+  std::map<std::string, VariableGroupSpec> without_storage_;
 };
 
 }  // namespace remnant
