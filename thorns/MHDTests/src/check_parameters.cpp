@@ -25,6 +25,9 @@ void check_parameters(Context& ctx) {
                   gamma, given);
     throw InputError(params.origin("EOS", "gamma"), buf);
   }
+  if (ctx.param<std::string>("HydroBase", "magnetic_field") != "evolved")
+    throw InputError(params.origin("HydroBase", "magnetic_field"),
+                     "MHDTests::problem = " + problem + " is a magnetised problem: set HydroBase::magnetic_field = evolved");
   if (ctx.grid().coordinates() != CoordinateSystem::cartesian)
     throw InputError(params.origin("Grid", "coordinates"),
                      "MHDTests::problem = " + problem + " runs on Cartesian grids (Grid::coordinates = cartesian)");

@@ -75,6 +75,17 @@ TEST(MHDTestsInitialData, BalsaraParfilesSetTheirStates) {
         }
       }
     }
+    // Face fields: uniform normal B^x, each cell's transverse field on its y and z faces.
+    const double by_left[5] = {1, 6, 7, 7, 0.3}, by_right[5] = {-1, 0.7, 0.7, -7, -0.7}, bx[5] = {0.5, 5, 10, 10, 2};
+    const int f1 = ctx.var("HydroBase::Bface1"), f2 = ctx.var("HydroBase::Bface2"), dv = ctx.var("MHDTests::divB");
+    for (Block* b : ctx.grid().local_blocks()) {
+      const Field B1 = b->field(f1, 0), B2 = b->field(f2, 0), div = b->field(dv, 0);
+      for (int i = 0; i < b->n[0]; ++i) {
+        EXPECT_EQ(B1(i, 0, 0), bx[n - 1]);
+        EXPECT_EQ(B2(i, 0, 0), b->x(0, i) < 0 ? by_left[n - 1] : by_right[n - 1]) << "balsara" << n << " x " << b->x(0, i);
+        EXPECT_EQ(div(i, 0, 0), 0.0);
+      }
+    }
     EXPECT_EQ(left, 100);
     EXPECT_EQ(right, 100);
     std::filesystem::remove_all(r.dir);
@@ -87,9 +98,27 @@ TEST(MHDTestsInitialData, WrongAdiabaticIndexIsRefusedNamingEOSGamma) {
   EXPECT_NE(e.find("balsara1"), std::string::npos) << e;
 }
 
+// The 2D parfiles start with div B at round-off: MHDTests::divB (the per-cell relative divergence)
+// after the initial data, on the refined field-loop grid too.
+TEST(MHDTestsInitialData, TwoDimensionalParfilesStartDivergenceFree) {
+  for (const char* parfile : {"field_loop_2d.yaml", "blast_cylindrical_2d.yaml", "rotor_2d.yaml"}) {
+    StartedRun r = start(parfile, {"Grid::ncells=[64,64,1]", "Grid::block_size=[16,16,1]"});
+    Context& ctx = r.sim->context();
+    const int dv = ctx.var("MHDTests::divB"), e = ctx.var("MHDTests::b2");
+    const double div = ctx.grid().reduce(dv, 0, ReductionKind::maximum);
+    const double energy = ctx.grid().reduce(e, 0, ReductionKind::volume_integral);
+    std::printf("%s: divB_max %.2e, magnetic energy %.6e, %zu blocks\n", parfile, div, energy, ctx.grid().all_blocks().size());
+    EXPECT_LE(div, 1e-13) << parfile;
+    EXPECT_GT(energy, 0.0) << parfile;
+    std::filesystem::remove_all(r.dir);
+  }
+}
+
 TEST(MHDTestsInitialData, MissingProblemAndTwoDimensionalProblemOn1DGridAreRefused) {
   std::string e = error_of("mhd_shocktube_balsara2.yaml", {"MHDTests::problem=none"});
   EXPECT_NE(e.find("MHDTests::problem"), std::string::npos) << e;
+  e = error_of("mhd_shocktube_balsara2.yaml", {"HydroBase::magnetic_field=none"});
+  EXPECT_NE(e.find("HydroBase::magnetic_field = evolved"), std::string::npos) << e;
   e = error_of("mhd_shocktube_balsara2.yaml", {"MHDTests::problem=rotor"});
   EXPECT_NE(e.find("Grid::dimension"), std::string::npos) << e;
 }
