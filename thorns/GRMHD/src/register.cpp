@@ -1,13 +1,17 @@
-// GRMHD (hydrodynamics): binds the scheduled functions of thorn.yaml.
+// GRMHD: binds the scheduled functions of thorn.yaml.
 #include <algorithm>
 
 #include "EOS/eos.hpp"
+#include "HydroBase/magnetic_field.hpp"
 #include "HydroBase/sweeps.hpp"
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
+#include "constrained_transport.hpp"
 #include "mass_budget.hpp"
+#include "mhd_fluxes.hpp"
 #include "rhs.hpp"
 #include "shock_tube.hpp"
+#include "shock_tube_field.hpp"
 #include "time_step.hpp"
 
 namespace remnant::grmhd {
@@ -52,13 +56,47 @@ void calc_rhs(Context& ctx) {
   }
 }
 
+// The MHD right-hand side: fluxes and face Riemann data, refluxing, edge EMFs, edge correction at
+// refinement boundaries, CT face update, flux divergence and magnetised sources.
+void calc_rhs_mhd(Context& ctx) {
+  const auto& eos = ctx.service<eos::EOS>("eos");
+  const RhsSettings s = rhs_settings(ctx);
+  const Groups g = Groups::of(ctx);
+  const MhdGroups mg = MhdGroups::of(ctx);
+  const EmfScheme scheme =
+      ctx.param<std::string>("GRMHD", "emf") == "arithmetic" ? EmfScheme::arithmetic : EmfScheme::uct_hll;
+  for (Block* b : ctx.grid().local_blocks()) compute_block_fluxes_mhd(eos, s, g, mg, *b);
+  std::vector<int> faces;
+  for (int d = 0; d < ctx.grid().dimension(); ++d) faces.push_back(g.flux[d]);
+  for (int d = ctx.grid().dimension(); d < 3; ++d)
+    for (Block* b : ctx.grid().local_blocks()) {
+      std::fill(b->data(g.flux[d]), b->data(g.flux[d]) + b->size(g.flux[d]), 0.0);
+      std::fill(b->data(mg.ct[d]), b->data(mg.ct[d]) + b->size(mg.ct[d]), 0.0);
+    }
+  ctx.grid().correct_fluxes(faces);
+  for (Block* b : ctx.grid().local_blocks()) edge_emfs(scheme, mg, *b);
+  ctx.grid().correct_edges(mg.emf);
+  const DomainCells dom = DomainCells::of(ctx);
+  for (Block* b : ctx.grid().local_blocks()) {
+    face_rhs(mg, *b);
+    compute_block_rhs_mhd(g, mg.bvec, *b);
+    outflow_rhs_block(g, dom, *b);
+  }
+}
+
 void con2prim(Context& ctx) { hydrobase::recover_all(ctx, "GRMHD_Con2Prim"); }
+
+void cell_centred_field(Context& ctx) {
+  const hydrobase::FieldGroups g = hydrobase::FieldGroups::of(ctx);
+  for (Block* b : ctx.grid().local_blocks()) hydrobase::cell_centred_field(g, *b);
+}
 
 double inverse_dt(Context& ctx) {
   const Groups g = Groups::of(ctx);
+  const int bvec = hydrobase::FieldGroups::of(ctx).bvec;
   double inv = 0;
   for (Block* b : ctx.grid().local_blocks())
-    inv = std::max(inv, block_inverse_dt(g, *b));
+    inv = std::max(inv, bvec >= 0 ? block_inverse_dt_mhd(g, bvec, *b) : block_inverse_dt(g, *b));
   return inv;
 }
 
@@ -69,7 +107,10 @@ REMNANT_REGISTER_THORN(GRMHD) {
   using namespace remnant::grmhd;
   reg.function("GRMHD_CheckParameters", check_parameters);
   reg.function("GRMHD_ShockTube", shock_tube_initial_data);
+  reg.function("GRMHD_ShockTubeField", shock_tube_field);
   reg.function("GRMHD_RHS", calc_rhs);
+  reg.function("GRMHD_RHS_MHD", calc_rhs_mhd);
+  reg.function("GRMHD_CellCentredField", cell_centred_field);
   reg.function("GRMHD_Con2Prim", con2prim);
   reg.inverse_dt_limit(inverse_dt);
 }

@@ -9,7 +9,9 @@
 
 #include "GRMHD/face_thermo.hpp"
 #include "GRMHD/sources.hpp"
+#include "GRMHD/sources_mhd.hpp"
 #include "GRMHD/valencia.hpp"
+#include "line_scratch.hpp"
 #include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd {
@@ -17,47 +19,10 @@ namespace {
 
 // Reconstructed variables: rho, W v^1, W v^2, W v^3, thermal (p or T), Ye.
 inline constexpr int kNumRec = 6;
-
-struct LineScratch {
-  int cap = 0;
-  std::vector<double> storage;
-  double* cell[kNumRec];    // cell values, offset so that [0] is the first interior cell
-  double* left[kNumRec];    // faces 0..n
-  double* right[kNumRec];
-  double* met[Metric::ncomp];  // cell metric along the line
-  double* flux[kNumCons];   // face fluxes (weighted)
-  double* ppm;              // reconstruction scratch
-  int ng = 0;
-  void ensure(int n, int ngh) {
-    const int len = n + 2 * ngh + 4;
-    if (len <= cap && ngh == ng) return;
-    cap = len;
-    ng = ngh;
-    const int arrays = kNumRec * 3 + Metric::ncomp + kNumCons + 1;
-    storage.assign(static_cast<std::size_t>(arrays) * static_cast<std::size_t>(len), 0.0);
-    double* p = storage.data();
-    auto take = [&](int offset) {
-      double* q = p + offset;
-      p += len;
-      return q;
-    };
-    for (double*& a : cell) a = take(ngh + 1);
-    for (double*& a : left) a = take(1);
-    for (double*& a : right) a = take(1);
-    for (double*& a : met) a = take(ngh + 1);
-    for (double*& a : flux) a = take(1);
-    ppm = take(1);
-  }
-};
-
-double face_value(MetricFaceInterpolation m, const double* a, int f) {
-  if (m == MetricFaceInterpolation::cubic)
-    return (9.0 * (a[f - 1] + a[f]) - (a[f - 2] + a[f + 1])) * (1.0 / 16.0);
-  return 0.5 * (a[f - 1] + a[f]);
-}
+using HydroLineScratch = LineScratch<kNumRec, kNumCons>;
 
 template <class E>
-void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, int d, LineScratch& L) {
+void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, int d, HydroLineScratch& L) {
   const int n = b.n[d], ng = b.ng[d];
   L.ensure(n, ng);
   Field prim[Prim::ncomp], met[Metric::ncomp], fout[kNumCons];
@@ -149,9 +114,13 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
     }
 }
 
-// Pass 2 over the cells of a block, i fastest.
-void divergence_and_sources(const Groups& g, Block& b) {
-  Field prim[Prim::ncomp], met[Metric::ncomp], rhs[kNumCons], flux[3][kNumCons];
+// Pass 2 over the cells of a block, i fastest. Mhd: the magnetised sources with the cell-centred
+// field of group `bvec` (B^i, not densitised); the hydro instantiation never touches it.
+template <bool Mhd>
+void divergence_and_sources(const Groups& g, Block& b, int bvec) {
+  Field prim[Prim::ncomp], met[Metric::ncomp], rhs[kNumCons], flux[3][kNumCons], bf[3];
+  if constexpr (Mhd)
+    for (int c = 0; c < 3; ++c) bf[c] = b.field(bvec, c);
   for (int c = 0; c < Prim::ncomp; ++c) prim[c] = b.field(g.prim, c);
   for (int c = 0; c < Metric::ncomp; ++c) met[c] = b.field(g.metric, c);
   for (int c = 0; c < kNumCons; ++c) rhs[c] = b.field(g.cons_rhs, c);
@@ -228,11 +197,18 @@ void divergence_and_sources(const Groups& g, Block& b) {
         }
         fs.v2 = fs.v[0] * fs.v_dn[0] + fs.v[1] * fs.v_dn[1] + fs.v[2] * fs.v_dn[2];
         double src[kNumCons];
-        gravity_sources(fs, pm, psi, dm, df, cartesian ? nullptr : &gam, shift, src);
+        double ptot = fs.press;
+        if constexpr (Mhd) {
+          const MagneticState ms = magnetic_state(fs, pm, bf[0].origin[o], bf[1].origin[o], bf[2].origin[o]);
+          gravity_sources_mhd(fs, ms, pm, psi, dm, df, cartesian ? nullptr : &gam, shift, src);
+          ptot = total_pressure(fs, ms);
+        } else {
+          gravity_sources(fs, pm, psi, dm, df, cartesian ? nullptr : &gam, shift, src);
+        }
         // Pressure part of the geometric source with the exact cell average of d_d ln sqrt(f),
         // (A+ - A-) / V, which balances a uniform pressure in the divergence to round-off.
         if (!cartesian) {
-          const double ap = alpha * fs.press;
+          const double ap = alpha * ptot;
           for (int d = 0; d < 3; ++d)
             if (used[d]) src[kS1 + d] += ap * (ff[d][id[d] + 1] - ff[d][id[d]]) / vw[d][id[d]];
         }
@@ -245,7 +221,7 @@ void divergence_and_sources(const Groups& g, Block& b) {
 
 template <class E>
 void block_fluxes(const E& eos, const RhsSettings& s, const Groups& g, Block& b) {
-  thread_local LineScratch scratch;
+  thread_local HydroLineScratch scratch;
   for (int d = 0; d < 3; ++d)
     if (direction_used(b, d)) sweep_direction(eos, s, g, b, d, scratch);
 }
@@ -256,6 +232,8 @@ void compute_block_fluxes(const eos::EOS& eos, const RhsSettings& s, const Group
   eos.visit([&](const auto& e) { block_fluxes(e, s, g, b); });
 }
 
-void compute_block_rhs(const Groups& g, Block& b) { divergence_and_sources(g, b); }
+void compute_block_rhs(const Groups& g, Block& b) { divergence_and_sources<false>(g, b, -1); }
+
+void compute_block_rhs_mhd(const Groups& g, int bvec, Block& b) { divergence_and_sources<true>(g, b, bvec); }
 
 }  // namespace remnant::grmhd

@@ -4,10 +4,9 @@
 #include "GRMHD/reconstruction.hpp"
 #include "EOS/eos.hpp"
 #include "groups.hpp"
+#include "line_scratch.hpp"
 
 namespace remnant::grmhd {
-
-enum class MetricFaceInterpolation { linear, cubic };
 
 struct RhsSettings {
   Reconstruction reconstruction = Reconstruction::ppm;
@@ -19,5 +18,7 @@ struct RhsSettings {
 void compute_block_fluxes(const eos::EOS& eos, const RhsSettings& s, const Groups& g, Block& b);
 // Pass 2: cons_rhs = -(flux divergence with exact face areas and volumes) + psi^6 sources.
 void compute_block_rhs(const Groups& g, Block& b);
+// Pass 2 with the magnetised stress tensor in the sources (cell-centred B^i in group `bvec`).
+void compute_block_rhs_mhd(const Groups& g, int bvec, Block& b);
 
 }  // namespace remnant::grmhd

@@ -4,12 +4,19 @@
 #include <cmath>
 
 #include "GRMHD/valencia.hpp"
+#include "GRMHD/valencia_mhd.hpp"
 #include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd {
 
-double block_inverse_dt(const Groups& g, Block& b) {
-  Field prim[Prim::ncomp], met[Metric::ncomp];
+namespace {
+
+// Mhd: the fast-magnetosonic estimate of valencia_mhd.hpp with the cell's B^i (group bvec).
+template <bool Mhd>
+double inverse_dt(const Groups& g, int bvec, Block& b) {
+  Field prim[Prim::ncomp], met[Metric::ncomp], bf[3];
+  if constexpr (Mhd)
+    for (int c = 0; c < 3; ++c) bf[c] = b.field(bvec, c);
   for (int c = 0; c < Prim::ncomp; ++c) prim[c] = b.field(g.prim, c);
   for (int c = 0; c < Metric::ncomp; ++c) met[c] = b.field(g.metric, c);
   const bool cartesian = b.coordinates == CoordinateSystem::cartesian;
@@ -30,14 +37,26 @@ double block_inverse_dt(const Groups& g, Block& b) {
     }
     s.v2 = s.v[0] * s.v_dn[0] + s.v[1] * s.v_dn[1] + s.v[2] * s.v_dn[2];
     s.cs2 = std::clamp(prim[Prim::idx::cs2].origin[o], 0.0, 1.0);
+    double signal2 = s.cs2;
+    if constexpr (Mhd) {
+      s.rho = prim[Prim::idx::rho].origin[o];
+      s.W = prim[Prim::idx::W].origin[o];
+      s.h = 1.0 + prim[Prim::idx::eps].origin[o] + prim[Prim::idx::press].origin[o] / s.rho;
+      signal2 = std::min(fast_speed2(s, magnetic_state(s, pm, bf[0].origin[o], bf[1].origin[o], bf[2].origin[o])), 1.0);
+    }
     for (int d = 0; d < 3; ++d) {
       if (idx[d] == 0) continue;
       double lm, lp;
-      characteristic_speeds(d, s, pm, lm, lp);
+      characteristic_speeds_with(d, signal2, s, pm, lm, lp);
       inv = std::max(inv, std::max(std::abs(lm), std::abs(lp)) * idx[d]);
     }
   });
   return inv;
 }
+
+}  // namespace
+
+double block_inverse_dt(const Groups& g, Block& b) { return inverse_dt<false>(g, -1, b); }
+double block_inverse_dt_mhd(const Groups& g, int bvec, Block& b) { return inverse_dt<true>(g, bvec, b); }
 
 }  // namespace remnant::grmhd

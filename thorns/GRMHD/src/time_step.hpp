@@ -5,5 +5,7 @@
 namespace remnant::grmhd {
 
 double block_inverse_dt(const Groups& g, Block& b);
+// The same with the fast-magnetosonic speed of the cell-centred field B^i (group bvec).
+double block_inverse_dt_mhd(const Groups& g, int bvec, Block& b);
 
 }  // namespace remnant::grmhd

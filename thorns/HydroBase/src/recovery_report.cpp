@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "HydroBase/magnetic_field.hpp"
 #include "HydroBase/sweeps.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
@@ -16,6 +17,7 @@ MatterGroups MatterGroups::of(const Context& ctx) {
   g.metric = vars::Spacetime::metric::id(ctx);
   g.budget = vars::HydroBase::mass_budget::id(ctx);
   for (int id : {g.cons, g.prim, g.metric, g.budget}) ctx.check_access(id);
+  g.bvec = FieldGroups::of(ctx).bvec;
   return g;
 }
 

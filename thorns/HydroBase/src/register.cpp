@@ -1,6 +1,7 @@
 // HydroBase: binds the scheduled functions of thorn.yaml.
 #include <algorithm>
 
+#include "HydroBase/magnetic_field.hpp"
 #include "HydroBase/sweeps.hpp"
 #include "remnant/registrar.hpp"
 
@@ -26,6 +27,10 @@ void initial_cons(Context& ctx) {
 REMNANT_REGISTER_THORN(HydroBase) {
   using namespace remnant::hydrobase;
   reg.function("HydroBase_InitialCons", initial_cons);
+  reg.function("HydroBase_InitialField", [](remnant::Context& ctx) {
+    const FieldGroups g = FieldGroups::of(ctx);
+    for (remnant::Block* b : ctx.grid().local_blocks()) cell_centred_field(g, *b);
+  });
   // In the metric solver's groups (thorn.yaml): the sources of its equations, and the same recovery
   // sweep as the evolution's with the new psi (followed by the sources of the recovered matter).
   reg.function("HydroBase_MatterSources", fill_matter_sources);

@@ -26,7 +26,12 @@ con2prim::Metric3 cell_metric(double psi4, const std::array<double, 3>& f) {
 // here is cell-centred with the same ghosts, so one offset serves all).
 struct CellAccess {
   Field prim[Prim::ncomp], met[Metric::ncomp], cons[Cons::ncomp];
+  Field bvec[3];
+  bool magnetic = false;
   CellAccess(const MatterGroups& g, Block& b) {
+    magnetic = g.bvec >= 0;
+    if (magnetic)
+      for (int q = 0; q < 3; ++q) bvec[q] = b.field(g.bvec, q);
     const Prim p(b, g.prim);
     const Metric m(b, g.metric);
     const Cons c(b, g.cons);
@@ -56,7 +61,13 @@ struct CellAccess {
     for (int i = 0; i < 3; ++i) c.S[i] = cons[Cons::idx::S + i].origin[o] * ipsi6;
     c.tau = cons[Cons::idx::tau].origin[o] * ipsi6;
     c.DYe = cons[Cons::idx::DYe].origin[o] * ipsi6;
+    if (magnetic) c.B = field(o);
     return c;
+  }
+  // B^i of the cell (zero without field).
+  con2prim::Vec3 field(std::ptrdiff_t o) const {
+    if (!magnetic) return {0, 0, 0};
+    return {bvec[0].origin[o], bvec[1].origin[o], bvec[2].origin[o]};
   }
 };
 
@@ -116,6 +127,7 @@ void prim_to_cons_impl(const E& eos, const con2prim::Settings& s, const atmosphe
     p.eps = acc.prim[Prim::idx::eps].origin[o];
     p.ye = acc.prim[Prim::idx::Ye].origin[o];
     p.T = acc.prim[Prim::idx::temperature].origin[o];
+    p.B = acc.field(o);
     const con2prim::Metric3 m = cell_metric(psi4, fd);
     if (atm.is_atmosphere(p.rho)) {
       atm.set(p);

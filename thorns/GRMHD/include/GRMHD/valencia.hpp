@@ -7,7 +7,7 @@
 //   U   = (D, S_i, tau, D Ye),  D = rho W, S_i = rho h W^2 v_i, tau = rho h W^2 - p - D,
 //   F^j = U (alpha v^j - beta^j) + alpha p (0, delta^j_i, v^j, 0).
 // Everything here is per point and NOT densitised; the caller multiplies by psi^6 and the face
-// weights. Magnetic terms enter later through the same structs (B^i, b^2), see DESIGN.md.
+// weights. The magnetic terms are in valencia_mhd.hpp (same structs plus a MagneticState).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -93,8 +93,11 @@ inline void flux(int d, const FluidState& s, const PointMetric& m, const double*
 }
 
 // Characteristic speeds along d (Banyuls et al. 1997, ApJ 476, 221), coordinate velocities.
-inline void characteristic_speeds(int d, const FluidState& s, const PointMetric& m, double& lm, double& lp) {
-  const double cs2 = s.cs2, v2 = s.v2, vd = s.v[d];
+// `cs2` is the squared signal speed in the fluid frame: the sound speed here, the fast-magnetosonic
+// estimate in valencia_mhd.hpp.
+inline void characteristic_speeds_with(int d, double cs2, const FluidState& s, const PointMetric& m, double& lm,
+                                       double& lp) {
+  const double v2 = s.v2, vd = s.v[d];
   const double den = 1.0 / (1.0 - v2 * cs2);
   const double disc = (1.0 - v2) * (m.g_up[d] * (1.0 - v2 * cs2) - vd * vd * (1.0 - cs2));
   const double root = std::sqrt(cs2 * std::max(disc, 0.0));
@@ -102,19 +105,27 @@ inline void characteristic_speeds(int d, const FluidState& s, const PointMetric&
   lm = m.alpha * (a - root) * den - m.beta[d];
   lp = m.alpha * (a + root) * den - m.beta[d];
 }
+inline void characteristic_speeds(int d, const FluidState& s, const PointMetric& m, double& lm, double& lp) {
+  characteristic_speeds_with(d, s.cs2, s, m, lm, lp);
+}
 
-// HLL (Harten, Lax & van Leer 1983) with the two-wave speeds bounded by zero.
-inline void hll_flux(const double* uL, const double* uR, const double* fL, const double* fR, double lmL, double lpL,
-                     double lmR, double lpR, double* f) {
+// HLL (Harten, Lax & van Leer 1983) with the two-wave speeds bounded by zero, for N components.
+template <int N>
+inline void hll_flux_n(const double* uL, const double* uR, const double* fL, const double* fR, double lmL, double lpL,
+                       double lmR, double lpR, double* f) {
   const double lp = std::max({0.0, lpL, lpR});
   const double lm = std::min({0.0, lmL, lmR});
   const double width = lp - lm;
   if (!(width > 1e-300)) {
-    for (int c = 0; c < kNumCons; ++c) f[c] = 0.5 * (fL[c] + fR[c]);
+    for (int c = 0; c < N; ++c) f[c] = 0.5 * (fL[c] + fR[c]);
     return;
   }
   const double iw = 1.0 / width, lpm = lp * lm;
-  for (int c = 0; c < kNumCons; ++c) f[c] = (lp * fL[c] - lm * fR[c] + lpm * (uR[c] - uL[c])) * iw;
+  for (int c = 0; c < N; ++c) f[c] = (lp * fL[c] - lm * fR[c] + lpm * (uR[c] - uL[c])) * iw;
+}
+inline void hll_flux(const double* uL, const double* uR, const double* fL, const double* fR, double lmL, double lpL,
+                     double lmR, double lpR, double* f) {
+  hll_flux_n<kNumCons>(uL, uR, fL, fR, lmL, lpL, lmR, lpR, f);
 }
 
 }  // namespace remnant::grmhd

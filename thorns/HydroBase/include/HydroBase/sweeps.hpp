@@ -16,6 +16,7 @@ namespace remnant::hydrobase {
 struct MatterGroups {
   int cons = -1, prim = -1, metric = -1;
   int budget = -1;  // HydroBase::mass_budget: the sweep adds the D it changes (atmosphere, policy); -1: none
+  int bvec = -1;    // HydroBase::Bvec (cell-centred B^i, not densitised) when the field is evolved; -1: none
   static MatterGroups of(const Context& ctx);
 };
 

@@ -1,0 +1,143 @@
+#include "constrained_transport.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "GRMHD/reconstruction.hpp"
+#include "groups.hpp"
+#include "remnant/cell_geometry.hpp"
+
+namespace remnant::grmhd {
+namespace {
+
+// Index arithmetic of one field: the offset of (i, j, k) and the stride of direction d.
+struct Strided {
+  Field f;
+  std::ptrdiff_t at(const int* id) const { return id[0] + id[1] * f.sj + id[2] * f.sk; }
+  std::ptrdiff_t stride(int d) const { return d == 0 ? 1 : d == 1 ? f.sj : f.sk; }
+  double operator[](std::ptrdiff_t o) const { return f.origin[o]; }
+};
+
+// The HLL average of the product vt B across an edge from its two sides (low, high), with the
+// dissipation on B: (a+ vt_l B_l + a- vt_h B_h - a+ a- (B_h - B_l)) / (a+ + a-).
+inline double hll_product(double ap, double am, double vl, double vh, double bl, double bh) {
+  const double w = ap + am;
+  if (!(w > 0)) return 0.5 * (vl * bl + vh * bh);
+  return (ap * vl * bl + am * vh * bh - ap * am * (bh - bl)) / w;
+}
+
+// Face values q[-2..1] around an edge between cells -1 and 0: MC-limited values on both sides.
+inline void edge_states(double qm2, double qm1, double q0, double qp1, double& low, double& high) {
+  low = qm1 + 0.5 * detail::mc_slope(qm1 - qm2, q0 - qm1);
+  high = q0 - 0.5 * detail::mc_slope(q0 - qm1, qp1 - q0);
+}
+
+// One direction's part -/+ HLL_a(vt^a B^b) of an edge: the two a-faces adjacent along b (ct_a at
+// offsets oa - sb and oa), and B^b of the b-face through the edge reconstructed along a.
+inline double upwind_part(const Strided* ct, std::ptrdiff_t oa, std::ptrdiff_t sb, const Strided& bf, std::ptrdiff_t ob,
+                          std::ptrdiff_t sa) {
+  const std::ptrdiff_t lo = oa - sb;
+  const double ap = std::max(ct[kAlphaPlus][lo], ct[kAlphaPlus][oa]);
+  const double am = std::max(ct[kAlphaMinus][lo], ct[kAlphaMinus][oa]);
+  const double vl = 0.5 * (ct[kVtLeft][lo] + ct[kVtLeft][oa]);
+  const double vh = 0.5 * (ct[kVtRight][lo] + ct[kVtRight][oa]);
+  double bl, bh;
+  edge_states(bf[ob - 2 * sa], bf[ob - sa], bf[ob], bf[ob + sa], bl, bh);
+  return hll_product(ap, am, vl, vh, bl, bh);
+}
+
+}  // namespace
+
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b) {
+  bool used[3];
+  for (int d = 0; d < 3; ++d) used[d] = direction_used(b, d);
+  for (int c = 0; c < 3; ++c) {
+    const int a = (c + 1) % 3, bb = (c + 2) % 3;  // (a, bb, c) cyclic: E_c = vt^bb B^a - vt^a B^bb
+    const Strided e{b.field(g.emf[c], 0)};
+    Strided cta[kNumCt], ctb[kNumCt];
+    if (used[a])
+      for (int q = 0; q < kNumCt; ++q) cta[q] = {b.field(g.ct[a], q)};
+    if (used[bb])
+      for (int q = 0; q < kNumCt; ++q) ctb[q] = {b.field(g.ct[bb], q)};
+    const Strided Ba{b.field(g.bface[a], 0)}, Bb{b.field(g.bface[bb], 0)};
+    const double* ffa = b.face_factors(a);
+    const double* ffb = b.face_factors(bb);
+    const double* vwc = b.volume_weights(c);
+    const double len_c = used[c] ? b.dx[c] : 1.0;
+    const int ext[3] = {used[0] && c != 0 ? b.n[0] + 1 : b.n[0], used[1] && c != 1 ? b.n[1] + 1 : b.n[1],
+                        used[2] && c != 2 ? b.n[2] + 1 : b.n[2]};
+    int id[3];
+    for (id[2] = 0; id[2] < ext[2]; ++id[2])
+      for (id[1] = 0; id[1] < ext[1]; ++id[1])
+        for (id[0] = 0; id[0] < ext[0]; ++id[0]) {
+          double emf = 0;  // psi^6 (vt^bb B^a - vt^a B^bb) at the edge
+          if (used[a] && used[bb]) {
+            const std::ptrdiff_t oa = cta[0].at(id), ob = ctb[0].at(id);
+            if (scheme == EmfScheme::uct_hll) {
+              emf = -upwind_part(cta, oa, cta[0].stride(bb), Bb, Bb.at(id), Bb.stride(a)) +
+                    upwind_part(ctb, ob, ctb[0].stride(a), Ba, Ba.at(id), Ba.stride(bb));
+            } else {
+              const std::ptrdiff_t sb = cta[0].stride(bb), sa = ctb[0].stride(a);
+              emf = 0.25 * (-cta[kFluxNext][oa - sb] - cta[kFluxNext][oa] + ctb[kFluxPrev][ob - sa] + ctb[kFluxPrev][ob]);
+            }
+          } else if (used[a]) {
+            emf = -cta[kFluxNext][cta[0].at(id)];
+          } else if (used[bb]) {
+            emf = ctb[kFluxPrev][ctb[0].at(id)];
+          }
+          e.f.origin[e.at(id)] = emf * ffa[id[a]] * ffb[id[bb]] * vwc[id[c]] / len_c;
+        }
+  }
+}
+
+void face_rhs(const MhdGroups& g, Block& b) {
+  bool used[3];
+  for (int d = 0; d < 3; ++d) used[d] = direction_used(b, d);
+  for (int a = 0; a < 3; ++a) {
+    const int bb = (a + 1) % 3, c = (a + 2) % 3;
+    const Strided r{b.field(g.bface_rhs[a], 0)};
+    const Strided ec{b.field(g.emf[c], 0)}, eb{b.field(g.emf[bb], 0)};
+    const double len_c = used[c] ? b.dx[c] : 1.0, len_b = used[bb] ? b.dx[bb] : 1.0;
+    const int ext[3] = {used[0] && a == 0 ? b.n[0] + 1 : b.n[0], used[1] && a == 1 ? b.n[1] + 1 : b.n[1],
+                        used[2] && a == 2 ? b.n[2] + 1 : b.n[2]};
+    int id[3];
+    for (id[2] = 0; id[2] < ext[2]; ++id[2])
+      for (id[1] = 0; id[1] < ext[1]; ++id[1])
+        for (id[0] = 0; id[0] < ext[0]; ++id[0]) {
+          const double area = b.face_area(a, id[0], id[1], id[2]);
+          double circulation = 0;
+          // d_t (A B^a) = -[(E_c(b+1) - E_c(b)) dx_c - (E_b(c+1) - E_b(c)) dx_b]; an unused transverse
+          // direction has one edge on both sides: no contribution.
+          if (used[bb]) {
+            const std::ptrdiff_t o = ec.at(id);
+            circulation += (ec[o + ec.stride(bb)] - ec[o]) * len_c;
+          }
+          if (used[c]) {
+            const std::ptrdiff_t o = eb.at(id);
+            circulation -= (eb[o + eb.stride(c)] - eb[o]) * len_b;
+          }
+          r.f.origin[r.at(id)] = area > 0 ? -circulation / area : 0.0;
+        }
+  }
+}
+
+double relative_divergence(const MhdGroups& g, Block& b) {
+  double worst = 0;
+  for_interior(b, [&](int i, int j, int k) {
+    double sum = 0, scale = 0;
+    for (int a = 0; a < 3; ++a) {
+      if (!direction_used(b, a)) continue;
+      const Field bf = b.field(g.bface[a], 0);
+      int up[3] = {i, j, k};
+      ++up[a];
+      const double fm = b.face_area(a, i, j, k) * bf(i, j, k);
+      const double fp = b.face_area(a, up[0], up[1], up[2]) * bf(up[0], up[1], up[2]);
+      sum += fp - fm;
+      scale += std::abs(fp) + std::abs(fm);
+    }
+    if (scale > 0) worst = std::max(worst, std::abs(sum) / scale);
+  });
+  return worst;
+}
+
+}  // namespace remnant::grmhd

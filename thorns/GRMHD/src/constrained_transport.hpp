@@ -1,0 +1,34 @@
+#pragma once
+// Constrained transport of the face fields HydroBase::Bface1..3 (psi^6 B^a averaged over the face
+// with the weight sqrt f): EMFs on the edges from the face Riemann data (mhd_fluxes.hpp), the
+// face right-hand sides as circulations of the EMFs, and the cell-centred field from the faces.
+//
+// An edge along c (with (a, b, c) cyclic) holds E_c = psi^6 (vt^b B^a - vt^a B^b) times
+// (integral of sqrt f along the edge) / (its coordinate length), vt = alpha v - beta: a covariant
+// component whose line integral is value * dx_c, as GridDriver::correct_edges expects. The integral of
+// sqrt f = g_a g_b g_c along the edge is exactly face_factor_a * face_factor_b * volume_weight_c,
+// zero on the axis and at the origin. Then d/dt (area * Bface_a) = -(circulation of E around the
+// face), so the discrete divergence of every cell stays what it was to round-off.
+#include "mhd_groups.hpp"
+#include "remnant/grid.hpp"
+
+namespace remnant::grmhd {
+
+// The EMFs on the edges of the interior (block edges included) of the used directions' edges.
+// Reads ct_x/y/z (interior faces plus one transverse ghost layer) and Bface1..3 (two ghost layers).
+//   uct_hll:    Del Zanna et al. 2007 (A&A 473, 11), eq. 44 form of the upwind CT of Londrillo &
+//               Del Zanna 2004: E_c = -HLL_a(vt^a B^b) + HLL_b(vt^b B^a), with B^b, B^a reconstructed
+//               (MC) from their faces to the edge and the speeds and velocities of the two faces
+//               adjacent in each direction;
+//   arithmetic: the mean of the induction fluxes of the four faces around the edge (Balsara & Spicer 1999).
+// Where one transverse direction of an edge is unused, both reduce to the 1D HLL flux of the other.
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b);
+
+// Bface_rhs of the interior faces (block faces included) from the EMFs; zero on faces of zero area.
+void face_rhs(const MhdGroups& g, Block& b);
+
+// max over interior cells of |sum of +-area Bface| / (sum of area |Bface|) (0 where no flux): the
+// discrete divergence relative to the fluxes through the cell's faces.
+double relative_divergence(const MhdGroups& g, Block& b);
+
+}  // namespace remnant::grmhd

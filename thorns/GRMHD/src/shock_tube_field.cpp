@@ -1,0 +1,97 @@
+#include "shock_tube_field.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "HydroBase/magnetic_field.hpp"
+#include "remnant/cell_geometry.hpp"
+#include "remnant/error.hpp"
+
+namespace remnant::grmhd {
+
+CovariantPotential test_potential(CoordinateSystem cs, double a0) {
+  constexpr double k = 2 * std::numbers::pi;
+  switch (cs) {
+    case CoordinateSystem::cartesian:
+      return [a0](const Point3& x) {
+        const double sx = std::sin(k * x[0]), sy = std::sin(k * x[1]), sz = std::sin(k * x[2]);
+        return std::array<double, 3>{a0 * sy * sz, a0 * sz * sx, a0 * sx * sy};
+      };
+    case CoordinateSystem::cylindrical:
+      return [a0](const Point3& x) {
+        const double R2 = x[0] * x[0];
+        return std::array<double, 3>{0.0, a0 * R2 * std::sin(x[2]), a0 * R2 * std::cos(k * x[1])};
+      };
+    case CoordinateSystem::spherical:
+      return [a0](const Point3& x) {
+        const double r2 = x[0] * x[0], s = std::sin(x[1]);
+        return std::array<double, 3>{a0 * r2 * std::cos(x[1]), 0.0, a0 * r2 * s * s * std::cos(k * x[0])};
+      };
+  }
+  return {};
+}
+
+void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& bface, Block& b) {
+  bool used[3];
+  for (int d = 0; d < 3; ++d) used[d] = direction_used(b, d);
+  // The line integral of A_c along the edge of direction c at face indices id (cell id[c]).
+  auto line = [&](int c, const int* id) {
+    Point3 x{};
+    for (int d = 0; d < 3; ++d) x[d] = d == c ? b.x(d, id[d]) : b.face_coordinate(d, id[d]);
+    const double len = used[c] ? b.dx[c] : b.volume_weight(c, 0);
+    return A(x)[c] * len;
+  };
+  for (int a = 0; a < 3; ++a) {
+    const int bb = (a + 1) % 3, c = (a + 2) % 3;
+    const Field f = b.field(bface[a], 0);
+    const int ext[3] = {b.n[0] + (used[0] && a == 0), b.n[1] + (used[1] && a == 1), b.n[2] + (used[2] && a == 2)};
+    int id[3];
+    for (id[2] = 0; id[2] < ext[2]; ++id[2])
+      for (id[1] = 0; id[1] < ext[1]; ++id[1])
+        for (id[0] = 0; id[0] < ext[0]; ++id[0]) {
+          // Phi_a = d_b A_c - d_c A_b around the face.
+          double flux = 0;
+          if (used[bb]) {
+            int up[3] = {id[0], id[1], id[2]};
+            ++up[bb];
+            flux += line(c, up) - line(c, id);
+          }
+          if (used[c]) {
+            int up[3] = {id[0], id[1], id[2]};
+            ++up[c];
+            flux -= line(bb, up) - line(bb, id);
+          }
+          const double area = b.face_area(a, id[0], id[1], id[2]);
+          f(id[0], id[1], id[2]) += area > 0 ? flux / area : 0.0;
+        }
+  }
+}
+
+void shock_tube_field(Context& ctx) {
+  if (ctx.param<std::string>("GRMHD", "initial_data") != "shock_tube") return;
+  const auto& left = ctx.param<std::vector<double>>("GRMHD", "shock_field_left");
+  const auto& right = ctx.param<std::vector<double>>("GRMHD", "shock_field_right");
+  if (left[0] != right[0])
+    throw InputError(ctx.params().origin("GRMHD", "shock_field_right"),
+                     "GRMHD::shock_field_left[0] and shock_field_right[0] (B^1, normal to the discontinuity) must be equal: a jump is not divergence-free");
+  const double x0 = ctx.param<double>("GRMHD", "shock_position");
+  const double a0 = ctx.param<double>("GRMHD", "field_potential_amplitude");
+  const hydrobase::FieldGroups g = hydrobase::FieldGroups::of(ctx);
+  const CovariantPotential A = test_potential(ctx.grid().coordinates(), a0);
+  for (Block* b : ctx.grid().local_blocks()) {
+    for (int a = 0; a < 3; ++a) {
+      const Field f = b->field(g.bface[a], 0);
+      const bool used = direction_used(*b, a);
+      for (int k = 0; k < b->n[2] + (used && a == 2); ++k)
+        for (int j = 0; j < b->n[1] + (used && a == 1); ++j)
+          for (int i = 0; i < b->n[0] + (used && a == 0); ++i) {
+            // x faces take the left value at and left of x0 (B^1 is equal anyway); the others their cell's.
+            const double x = a == 0 ? b->face_coordinate(0, i) : b->x(0, i);
+            f(i, j, k) = (x < x0 ? left : right)[static_cast<std::size_t>(a)];
+          }
+    }
+    if (a0 != 0) add_potential_field(A, g.bface, *b);
+  }
+}
+
+}  // namespace remnant::grmhd
