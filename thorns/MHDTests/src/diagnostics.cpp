@@ -23,8 +23,8 @@ double max_face_value(Block& b, const Field& bx, const Field& by, const Field& b
   return m;
 }
 
-void cell_diagnostics(Block& b, const Field& bx, const Field& by, const Field& bz, double b_ref, const Field& div_rel,
-                      const Field& b2) {
+void cell_diagnostics(Block& b, const Field& bx, const Field& by, const Field& bz, double b_ref, double floor,
+                      const Field& div_rel, const Field& b2, const Field& abs_b) {
   double dx_min = 1e300;
   for (int d = 0; d < 3; ++d)
     if (direction_used(b, d)) dx_min = std::min(dx_min, b.dx[d]);
@@ -36,19 +36,23 @@ void cell_diagnostics(Block& b, const Field& bx, const Field& by, const Field& b
         const double cx = 0.5 * (bx(i, j, k) + bx(i + up[0], j, k)), cy = 0.5 * (by(i, j, k) + by(i, j + up[1], k));
         const double cz = 0.5 * (bz(i, j, k) + bz(i, j, k + up[2]));
         b2(i, j, k) = 0.5 * (cx * cx + cy * cy + cz * cz);
+        const double magnitude = std::sqrt(cx * cx + cy * cy + cz * cz);
+        abs_b(i, j, k) = magnitude >= floor * b_ref ? magnitude : 0.0;
         div_rel(i, j, k) = b_ref > 0 ? std::abs(cell_divergence(b, bx, by, bz, i, j, k)) * dx_min / b_ref : 0.0;
       }
 }
 
 void magnetic_diagnostics(Context& ctx) {
   const int g1 = ctx.var("HydroBase::Bface1"), g2 = ctx.var("HydroBase::Bface2"), g3 = ctx.var("HydroBase::Bface3");
-  const int div = ctx.var("MHDTests::divB"), b2 = ctx.var("MHDTests::b2");
+  const int div = ctx.var("MHDTests::divB"), b2 = ctx.var("MHDTests::b2"), abs_b = ctx.var("MHDTests::absB");
+  const double floor = ctx.param<double>("MHDTests", "refine_field_floor");
   double b_ref = 0;
   for (Block* b : ctx.grid().local_blocks())
     b_ref = std::max(b_ref, max_face_value(*b, b->field(g1, 0), b->field(g2, 0), b->field(g3, 0)));
   MPI_Allreduce(MPI_IN_PLACE, &b_ref, 1, MPI_DOUBLE, MPI_MAX, ctx.grid().comm());
   for (Block* b : ctx.grid().local_blocks())
-    cell_diagnostics(*b, b->field(g1, 0), b->field(g2, 0), b->field(g3, 0), b_ref, b->field(div, 0), b->field(b2, 0));
+    cell_diagnostics(*b, b->field(g1, 0), b->field(g2, 0), b->field(g3, 0), b_ref, floor, b->field(div, 0), b->field(b2, 0),
+                     b->field(abs_b, 0));
 }
 
 }  // namespace remnant::mhd_tests

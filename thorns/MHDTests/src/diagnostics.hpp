@@ -12,10 +12,12 @@ namespace remnant::mhd_tests {
 
 // Largest |value| over the interior faces of the block.
 double max_face_value(Block& b, const Field& bx, const Field& by, const Field& bz);
-void cell_diagnostics(Block& b, const Field& bx, const Field& by, const Field& bz, double b_ref, const Field& div_rel,
-                      const Field& b2);
+// absB = |B| of the face means where it is at least floor * b_ref, else 0.
+void cell_diagnostics(Block& b, const Field& bx, const Field& by, const Field& bz, double b_ref, double floor,
+                      const Field& div_rel, const Field& b2, const Field& abs_b);
 
-// Scheduled: fills MHDTests::divB and MHDTests::b2 on every local block.
+// Scheduled (and called after the initial face fields): fills MHDTests::divB, b2, absB on every
+// local block.
 void magnetic_diagnostics(Context& ctx);
 
 }  // namespace remnant::mhd_tests

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "diagnostics.hpp"
 #include "face_fields.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "settings.hpp"
@@ -57,6 +58,7 @@ void initial_face_fields(Context& ctx) {
       }
     }
   }
+  magnetic_diagnostics(ctx);  // absB for the initial regrid, divB/b2 of the initial data
 }
 
 }  // namespace remnant::mhd_tests

@@ -161,7 +161,7 @@ TEST(MHDTestsFaceFields, DiagnosticsSeeABrokenFace) {
   faces_from_potential(*f.block, [&](double x, double y) { return field_loop_potential(p, x, y); }, f.bx, f.by, f.bz);
   // Two cell groups on a second block sharing the geometry: reuse the face registry's block layout.
   VariableRegistry cells;
-  for (const char* n : {"divB", "b2"}) {
+  for (const char* n : {"divB", "b2", "absB"}) {
     VariableGroupSpec s;
     s.thorn = "Test";
     s.name = n;
@@ -171,14 +171,29 @@ TEST(MHDTestsFaceFields, DiagnosticsSeeABrokenFace) {
   const Block& b = *f.block;
   Block out(0, 0, {0, 0, 0}, b.n, b.ng, b.lo, b.dx, cells);
   out.set_geometry(CoordinateSystem::cartesian, b.lo);
-  const Field div = out.field(0, 0), b2 = out.field(1, 0);
+  const Field div = out.field(0, 0), b2 = out.field(1, 0), abs_b = out.field(2, 0);
   auto max_div = [&] {
     double m = 0;
     for (int j = 0; j < b.n[1]; ++j)
       for (int i = 0; i < b.n[0]; ++i) m = std::max(m, div(i, j, 0));
     return m;
   };
-  cell_diagnostics(*f.block, f.bx, f.by, f.bz, max_face_value(*f.block, f.bx, f.by, f.bz), div, b2);
+  const double b_ref = max_face_value(*f.block, f.bx, f.by, f.bz);
+  cell_diagnostics(*f.block, f.bx, f.by, f.bz, b_ref, 0.5, div, b2, abs_b);
+  int zeroed = 0, kept = 0;
+  for (int j = 0; j < b.n[1]; ++j)
+    for (int i = 0; i < b.n[0]; ++i) {
+      const double m = std::sqrt(2 * b2(i, j, 0));
+      if (m < 0.5 * b_ref) {
+        EXPECT_EQ(abs_b(i, j, 0), 0.0);
+        zeroed += m > 0;
+      } else {
+        EXPECT_EQ(abs_b(i, j, 0), m);
+        ++kept;
+      }
+    }
+  EXPECT_GT(zeroed, 0);
+  EXPECT_GT(kept, 0);
   const double clean = max_div();
   double energy = 0;
   for (int j = 0; j < b.n[1]; ++j)
@@ -186,7 +201,7 @@ TEST(MHDTestsFaceFields, DiagnosticsSeeABrokenFace) {
   EXPECT_LE(clean, 1e-13);
   EXPECT_NEAR(energy / field_loop_magnetic_energy(p), 1.0, 1e-2);  // 6.5e-3 at 128 x 64
   f.bx(64, 32, 0) *= 1.01;  // a 1 % error on one face of the loop
-  cell_diagnostics(*f.block, f.bx, f.by, f.bz, max_face_value(*f.block, f.bx, f.by, f.bz), div, b2);
+  cell_diagnostics(*f.block, f.bx, f.by, f.bz, b_ref, 0.5, div, b2, abs_b);
   std::printf("divB diagnostic: clean %.2e, one face off by 1 %%: %.2e\n", clean, max_div());
   EXPECT_GT(max_div(), 1e-4);
 }
