@@ -15,7 +15,7 @@ void star(Context& ctx) {
   const StarDiagnostics d = star_diagnostics(ctx);
   if (ctx.rank() == 0) {
     const std::string path = ctx.out_dir() + "/analysis.tsv";
-    if (history.rows.empty()) start_or_resume_tsv_file(ctx, path, tsv_header());
+    if (history.rows.empty()) start_or_resume_tsv_file(ctx, path, tsv_header(d.has_rotation));
     std::ofstream out(path, std::ios::app);
     out << tsv_line(d);
     if (!out) throw RunError("Analysis: cannot write " + path);
@@ -23,7 +23,16 @@ void star(Context& ctx) {
   history.rows.push_back(d);
 }
 
+// Runs before Analysis_Star on the same iterations; its values go into that row (star_diagnostics).
+void rotation(Context& ctx) {
+  if (!ctx.has_service("Analysis::rotation_now")) ctx.publish("Analysis::rotation_now", std::make_shared<RotationDiagnostics>());
+  ctx.service<RotationDiagnostics>("Analysis::rotation_now") = rotation_diagnostics(ctx);
+}
+
 }  // namespace
 }  // namespace remnant::analysis
 
-REMNANT_REGISTER_THORN(Analysis) { reg.function("Analysis_Star", remnant::analysis::star); }
+REMNANT_REGISTER_THORN(Analysis) {
+  reg.function("Analysis_Star", remnant::analysis::star);
+  reg.function("Analysis_Rotation", remnant::analysis::rotation);
+}

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 
 #include "remnant/coordinates.hpp"
@@ -70,12 +71,18 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   d.outflow = outflow;
   d.atmosphere_source = source;
   d.mass_budget = mass_g + outflow - source;
+  if (ctx.param<bool>("Analysis", "rotation")) {  // computed by Analysis_Rotation just before
+    d.has_rotation = true;
+    d.rotation = ctx.service<RotationDiagnostics>("Analysis::rotation_now");
+  }
   return d;
 }
 
-const char* tsv_header() {
-  return "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
-         "atmosphere_source\tmass_budget\n";
+std::string tsv_header(bool rotation) {
+  std::string h = "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
+                  "atmosphere_source\tmass_budget";
+  if (rotation) h += "\tJ\tT_over_W\tOmega_c\tM_komar\tmode_m1\tmode_m2";
+  return h + "\n";
 }
 
 std::string tsv_line(const StarDiagnostics& d) {
@@ -83,7 +90,13 @@ std::string tsv_line(const StarDiagnostics& d) {
   std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
                 static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
                 d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
-  return b;
+  if (!d.has_rotation) return b;
+  const RotationDiagnostics& r = d.rotation;
+  std::string line(b, std::strlen(b) - 1);  // without the newline
+  char c[256];
+  std::snprintf(c, sizeof c, "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", r.J, r.T_over_W, r.omega_c, r.M_komar,
+                r.mode_m1, r.mode_m2);
+  return line + c;
 }
 
 }  // namespace remnant::analysis

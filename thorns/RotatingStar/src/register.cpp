@@ -14,6 +14,7 @@
 #include "remnant/cell_geometry.hpp"
 #include "remnant/context.hpp"
 #include "remnant/coordinates.hpp"
+#include "remnant/domain.hpp"
 #include "remnant/registrar.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
@@ -110,8 +111,24 @@ const RotatingStarModel& model_for(const Context& ctx) {
   return *cache.emplace(key, std::move(c)).first->second.model;
 }
 
+// A mirror plane through the rotation axis (Cartesian x = 0 or y = 0) reverses the rotation in
+// the image half: v^phi and beta^phi would jump there and J would cancel. Only z = 0 mirrors a
+// rotating star.
+void check_rotation_symmetry(const Context& ctx, const RotatingStarModel& star) {
+  if (star.globals().omega_c == 0 || ctx.grid().coordinates() != CoordinateSystem::cartesian || ctx.grid().dimension() < 2)
+    return;
+  const Domain d = ctx.grid().domain();
+  for (int dir = 0; dir < 2; ++dir)
+    for (int side = 0; side < 2; ++side)
+      if (d.faces.boundary[dir][side] == Boundary::reflect)
+        throw RunError(std::string("RotatingStar: Grid::boundary_") + (side == 0 ? "lower" : "upper") + "[" + std::to_string(dir) +
+                       "] = reflect mirrors the star through a plane containing the rotation axis, which reverses its rotation; "
+                       "a rotating star needs the whole (x, y) plane (outflow in x and y; reflect in z is allowed)");
+}
+
 void initial(Context& ctx) {
   const RotatingStarModel& star = model_for(ctx);
+  check_rotation_symmetry(ctx, star);
   for (Block* b : ctx.grid().local_blocks()) {
     const vars::HydroBase::prim prim(ctx, *b);
     const vars::Spacetime::metric metric(ctx, *b);

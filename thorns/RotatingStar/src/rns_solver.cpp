@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <optional>
 
 #include "RotatingStar/rns_solver.hpp"
 #include "TOV/tov_solver.hpp"
@@ -57,7 +58,17 @@ RotatingStarModel::RotatingStarModel(const tov::ColdSlice& slice, const RnsParam
   }
   for (auto* f : {&psi_, &apsi_, &bphi_, &rho_, &eps_, &press_, &ye_, &W_, &v_, &omega_f_, &aa_})
     f->assign(std::size_t(n) * nmu_, 0.0);
-  solve();
+  tov_psi_ = psi_l_[0];
+  tov_apsi_ = apsi_l_[0];
+  if (p_.axis_ratio == 0 && p_.omega > 0) {
+    try {
+      solve();
+    } catch (const RnsError& direct) {
+      solve_omega_by_axis_ratio(direct);  // near mass shedding the fixed-Omega iteration runs away
+    }
+  } else {
+    solve();
+  }
   compute_globals();
   const RnsGlobals& g = g_;
   for (double v : {g.M_komar, g.M_adm, g.M_rest, g.J, g.r_e, g.r_p, g.R_circ, g.omega_c, g.omega_e, g.grv2, g.grv3})
@@ -188,7 +199,7 @@ void RotatingStarModel::solve() {
     const bool ramping = it < ramp;
     const double f = ramping ? double(it + 1) / ramp : 1.0;
     if (target_ratio > 0) p_.axis_ratio = 1 - f * (1 - target_ratio);
-    else omega_ = f * target_omega;
+    else omega_ = std::sqrt(f) * target_omega;
     evaluate_metric_on_grid();
     matter_from_bernoulli(ramping);
     std::vector<std::vector<std::vector<double>>> old;
@@ -222,6 +233,71 @@ void RotatingStarModel::solve() {
       throw RnsError(fmt("axis ratio %g is beyond the mass-shedding limit (the equatorial surface sits at %g, not at r_e = %g)",
                          p_.axis_ratio, re, r_e_));
   }
+}
+
+void RotatingStarModel::restart_from_tov() {
+  for (auto* a : {&psi_l_, &dpsi_l_, &apsi_l_, &dapsi_l_, &b_l_, &db_l_, &x_l_, &dx_l_})
+    for (auto& f : *a) std::fill(f.begin(), f.end(), 0.0);
+  psi_l_[0] = tov_psi_;
+  apsi_l_[0] = tov_apsi_;
+  omega_ = 0;
+}
+
+// Omega(r_p/r_e) rises monotonically from 0 at ratio 1 to the Kepler rate at mass shedding, and the
+// axis-ratio iteration stays stable there: find the ratio whose Omega is the target, by regula falsi
+// (Illinois) between a slower model and a faster one or a failed (beyond-shedding) ratio, which is
+// then bisected. A target above every model's Omega is beyond shedding: the direct error stands.
+void RotatingStarModel::solve_omega_by_axis_ratio(const RnsError& direct) {
+  const double target = p_.omega;
+  auto omega_at = [&](double q) -> std::optional<double> {
+    restart_from_tov();
+    p_.axis_ratio = q;
+    p_.omega = 0;
+    try {
+      solve();
+    } catch (const RnsError&) {
+      return std::nullopt;
+    }
+    return omega_;
+  };
+  // Bracket: q_slow has Omega < target (ratio 1: Omega = 0); q_fast has Omega > target or failed.
+  double q_slow = 1, f_slow = -target, q_fast = 0, f_fast = 0;
+  bool fast_valid = false;
+  for (double q = 0.9; q > 0.3; q -= 0.1) {
+    const auto om = omega_at(q);
+    if (om && *om < target) { q_slow = q, f_slow = *om - target; continue; }
+    q_fast = q, fast_valid = bool(om), f_fast = om ? *om - target : 0;
+    break;
+  }
+  if (q_fast == 0) throw direct;
+  int side = 0;
+  for (int it = 0; it < 60; ++it) {
+    double q = 0.5 * (q_slow + q_fast);
+    if (fast_valid) q = (q_slow * f_fast - q_fast * f_slow) / (f_fast - f_slow);
+    const auto om = omega_at(q);
+    if (om && std::abs(*om / target - 1) < 1e-9) {
+      p_.axis_ratio = 0;
+      p_.omega = target;
+      return;
+    }
+    if (om && *om < target) {
+      q_slow = q, f_slow = *om - target;
+      if (side == -1 && fast_valid) f_fast *= 0.5;  // Illinois: the stale end's weight halves
+      side = -1;
+    } else {
+      q_fast = q, fast_valid = bool(om), f_fast = om ? *om - target : 0;
+      if (side == 1) f_slow *= 0.5;
+      side = 1;
+    }
+    if (q_slow - q_fast < 1e-7) break;  // Omega(q) is flat at shedding: 1e-7 in q is < 1e-7 in Omega
+    // Within 1e-3 of the shedding ratio Omega changes by ~1e-4 (BU sequence): 1e-3 short is out of reach.
+    if (!fast_valid && q_slow - q_fast < 1e-3 && f_slow < -1e-3 * target) break;
+  }
+  p_.axis_ratio = 0;
+  p_.omega = target;
+  if (fast_valid) throw direct;
+  throw RnsError(fmt("Omega = %.7g is beyond mass shedding: the fastest equilibrium of this central density rotates at Omega = %.7g (r_p/r_e = %.5f)",
+                     target, f_slow + target, q_slow));
 }
 
 void RotatingStarModel::solve_potentials() {

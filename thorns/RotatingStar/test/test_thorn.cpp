@@ -41,7 +41,7 @@ MetricErrors run(int n, int steps, double xmax = 24) {
   o.overrides = {"Grid::ncells=[" + N + "," + N + ",1]", "Grid::block_size=[" + std::to_string(n / 4) + "," + std::to_string(n / 4) + ",1]",
                  "Grid::xmax=[" + std::to_string(xmax) + "," + std::to_string(xmax) + ",6.283185307179586]", "Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]",
                  "Grid::region_bounds=[]", "MoL::max_iterations=" + std::to_string(steps), "MoL::final_time=-1",
-                 "XCFC::solve_every=1", "Flesh::out_dir=" + out.string()};
+                 "XCFC::solve_every=1", "IO::hdf5_every_time=0", "Flesh::out_dir=" + out.string()};
   Simulation sim(catalog, o, MPI_COMM_WORLD);
   sim.setup_output_and_grid();
   sim.run();

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "Analysis/rotation_diagnostics.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::analysis {
@@ -17,6 +18,8 @@ struct StarDiagnostics {
   // added by the atmosphere and the error policy so far, and rest_mass + outflow - source, which
   // the scheme keeps constant to round-off.
   double outflow = 0, atmosphere_source = 0, mass_budget = 0;
+  bool has_rotation = false;  // Analysis::rotation: the columns of `rotation` follow mass_budget
+  RotationDiagnostics rotation;
 };
 
 struct History {
@@ -25,7 +28,7 @@ struct History {
 
 // Collective over the grid's ranks; every rank gets the same values.
 StarDiagnostics star_diagnostics(Context& ctx);
-const char* tsv_header();
+std::string tsv_header(bool rotation);
 std::string tsv_line(const StarDiagnostics& d);
 
 }  // namespace remnant::analysis

@@ -78,6 +78,8 @@ class RotatingStarModel {
 
  private:
   void solve();
+  void restart_from_tov();
+  void solve_omega_by_axis_ratio(const RnsError& direct);
   void evaluate_metric_on_grid();
   bool matter_from_bernoulli(bool ramping);
   void solve_potentials();
@@ -89,6 +91,7 @@ class RotatingStarModel {
   LegendreTable leg_;
   double dr_ = 0, Hc_ = 0, C_ = 0, omega_ = 0, A2_ = 0, r_e_ = 0, r_p_ = 0;
   int nmu_ = 0, N_ = 0;        // N_: the last radial node
+  std::vector<double> tov_psi_, tov_apsi_;  // the first guess's monopoles (restarts)
   std::vector<double> r_;      // radial nodes: uniform (dr_) to r_out, then stretched to r_max
   // Multipole radial functions [l][i]: psi - 1 and alpha psi - 1 (even l), b / r = sum b_l / r P_l'
   // with b = r sin(theta) beta^phi and x likewise for X (odd l); with r-derivatives.
