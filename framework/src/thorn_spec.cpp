@@ -96,9 +96,20 @@ struct Reader {
       std::string kind, base, extra;
       is >> kind >> base >> extra;
       auto ki = std::find(kinds.begin(), kinds.end(), kind);
+      // '<kind> <name>[N]': only component N (1..3) of a vector, covector or axial vector, e.g. the
+      // face field of one direction, with that component's parities.
+      int only = -1;
+      static const std::regex one_component("([A-Za-z_][A-Za-z0-9_]*)\\[([123])\\]");
+      std::smatch m;
+      if (std::regex_match(base, m, one_component) && ki != kinds.end() && component_count(static_cast<TensorKind>(ki - kinds.begin())) == 3) {
+        only = m[2].str()[0] - '1';
+        base = m[1].str();
+      }
       if (ki == kinds.end() || base.empty() || !extra.empty() || !is_identifier(base))
-        throw InputError(at(e), "tensor entry '" + entry + "' must be '<kind> <name>' with kind one of: " + join(kinds));
-      for (auto& comp : expand_tensor(static_cast<TensorKind>(ki - kinds.begin()), base)) {
+        throw InputError(at(e), "tensor entry '" + entry + "' must be '<kind> <name>' (or '<kind> <name>[N]' for one component of a vector) with kind one of: " + join(kinds));
+      auto comps = expand_tensor(static_cast<TensorKind>(ki - kinds.begin()), base);
+      if (only >= 0) comps = {comps[static_cast<std::size_t>(only)]};
+      for (auto& comp : comps) {
         if (!seen.insert(comp.name).second)
           throw InputError(at(e), "component '" + comp.name + "' appears twice in group '" + g.name + "'");
         g.components.push_back(std::move(comp));

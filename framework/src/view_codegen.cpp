@@ -40,6 +40,14 @@ std::string tensor_base(const ComponentSpec& c) {
   return c.name.substr(0, c.name.size() - digits);
 }
 
+// Whether the group holds every component of the tensor of component c (not just 'B[2]'): only
+// then does the tensor get an indexed accessor.
+bool whole_tensor(const VariableGroupSpec& g, const ComponentSpec& c) {
+  int n = 0;
+  for (const auto& o : g.components) n += o.indices[0] >= 0 && tensor_base(o) == tensor_base(c);
+  return n == component_count(c.kind);
+}
+
 void emit_group(std::ostringstream& os, const ThornSpec& spec, const VariableGroupSpec& g) {
   check_name(spec, g, g.name, "group");
   const std::string full = spec.name + "::" + g.name;
@@ -58,7 +66,7 @@ void emit_group(std::ostringstream& os, const ThornSpec& spec, const VariableGro
   std::set<std::string> seen;
   for (int c = 0; c < g.ncomp(); ++c) {
     const ComponentSpec& comp = g.components[static_cast<std::size_t>(c)];
-    if (comp.indices[0] < 0) continue;
+    if (comp.indices[0] < 0 || !whole_tensor(g, comp)) continue;
     const std::string base = tensor_base(comp);
     if (!seen.insert(base).second) continue;
     check_name(spec, g, base, "tensor");
@@ -73,7 +81,7 @@ void emit_group(std::ostringstream& os, const ThornSpec& spec, const VariableGro
   for (int c = 0; c < g.ncomp(); ++c) {
     const ComponentSpec& comp = g.components[static_cast<std::size_t>(c)];
     os << "  double& " << comp.name << "(int i, int j, int k) const { return (*this)(" << c << ", i, j, k); }\n";
-    if (comp.indices[0] < 0) continue;
+    if (comp.indices[0] < 0 || !whole_tensor(g, comp)) continue;
     const std::string base = tensor_base(comp);
     if (!seen.insert(base).second) continue;
     if (comp.indices[1] < 0)

@@ -94,3 +94,17 @@ TEST(ThornSpec, BasisOfVectorComponents) {
   expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - {group: B, tensor: [vector B], basis: polar}\n", "a.yaml"); },
                            {"a.yaml:3:", "basis 'polar' is not one of: coordinate, cartesian"});
 }
+
+// One component of a vector ("axial_vector B[2]", e.g. a face field of one direction) carries that
+// component's index and parities, not a scalar's.
+TEST(ThornSpec, SingleComponentOfAVector) {
+  const auto t = parse_thorn_spec("thorn: A\nvariables:\n  - {group: B2, centering: face_y, tensor: [\"axial_vector B[2]\"]}\n", "a.yaml");
+  ASSERT_EQ(t.variables[0].components.size(), 1u);
+  const auto& c = t.variables[0].components[0];
+  EXPECT_EQ(c.name, "B2");
+  EXPECT_EQ(c.kind, TensorKind::axial_vector);
+  EXPECT_EQ(c.indices[0], 1);
+  EXPECT_EQ(c.reflection_parity, (std::array<int, 3>{-1, 1, -1}));
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - {group: u, tensor: [\"scalar u[1]\"]}\n", "a.yaml"); },
+                           {"a.yaml:3:", "<name>[N]"});
+}

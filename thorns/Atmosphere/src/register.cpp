@@ -18,6 +18,7 @@ atmo::AtmosphereConfig config_from(const Context& ctx) {
   c.poly_K = real("poly_K");
   c.poly_gamma = real("poly_gamma");
   c.ye_analytic = real("ye_analytic");
+  c.sigma_max = real("sigma_max");
   return c;
 }
 

@@ -110,3 +110,19 @@ TEST(Atmosphere, RejectsInvalidSettings) {
   c.rho_thr = 0;
   EXPECT_THROW(atmo::make_atmosphere(gas, c), std::invalid_argument);
 }
+
+// The magnetisation cap: rho rises to b^2 / sigma_max only where the field exceeds it.
+TEST(Atmosphere, MagnetisationCap) {
+  remnant::atmosphere::Atmosphere a;
+  a.rho = 1e-10;
+  a.sigma_max = 100;
+  struct P {
+    double rho = 0, W = 1, eps = 0, press = 0, T = 0, ye = 0, cs2 = 0;
+    double v[3] = {0, 0, 0};
+  } p;
+  a.set(p);
+  EXPECT_FALSE(a.limit_magnetisation(p, 1e-9));  // b^2/rho = 10
+  EXPECT_EQ(p.rho, 1e-10);
+  EXPECT_TRUE(a.limit_magnetisation(p, 1e-4));   // b^2/rho = 1e6
+  EXPECT_DOUBLE_EQ(p.rho, 1e-6);
+}

@@ -1,4 +1,4 @@
-// GRMHD hydro benchmarks on one 3D Cartesian block holding a static TOV star (octant, 40% of the
+// GRMHD benchmarks (hydro, and MHD with BM_StepMHD) on one 3D Cartesian block holding a static TOV star (octant, 40% of the
 // cells inside the star at n = 32), ideal gas and the SFHo table. "zone-cycles/s" = cells x RK3 steps per
 // second on one core (a step: 3 x (fluxes + divergence/sources + update + con2prim)), as Athena++
 // counts them. Ghost exchange is the Grid's and not included.
@@ -57,6 +57,19 @@ void BM_Step(benchmark::State& st, const std::string& which) {
   st.counters["zone-cycles/s"] = benchmark::Counter(double(st.iterations() * sb.cells()), benchmark::Counter::kIsRate);
 }
 
+// The same step with the magnetic field evolved (uct_hll), and the memory of the run's groups.
+void BM_StepMHD(benchmark::State& st, const std::string& which, bool magnetic) {
+  const int n = static_cast<int>(st.range(0));
+  auto e = make_or_skip(st, which);
+  if (!e) return;
+  StarBlock sb(std::move(*e), n, kExtent, magnetic);
+  const double dt = 0.3 * kExtent / n / 0.6;
+  for (auto _ : st) sb.step(dt);
+  st.SetItemsProcessed(st.iterations() * sb.cells());
+  st.counters["zone-cycles/s"] = benchmark::Counter(double(st.iterations() * sb.cells()), benchmark::Counter::kIsRate);
+  st.counters["bytes/cell"] = sb.bytes_per_cell();
+}
+
 void BM_Part(benchmark::State& st, const std::string& which, int part) {
   const int n = static_cast<int>(st.range(0));
   auto e = make_or_skip(st, which);
@@ -74,6 +87,9 @@ void BM_Part(benchmark::State& st, const std::string& which, int part) {
 
 BENCHMARK_CAPTURE(BM_Step, ideal_gas, std::string("ideal"))->Arg(16)->Arg(32)->Arg(48)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Step, sfho, std::string("sfho"))->Arg(16)->Arg(32)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_StepMHD, hydro_ideal_gas, std::string("ideal"), false)->Arg(32)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_StepMHD, mhd_ideal_gas, std::string("ideal"), true)->Arg(32)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_StepMHD, mhd_sfho, std::string("sfho"), true)->Arg(32)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_Part, con2prim_ideal_gas, std::string("ideal"), 0)->Arg(32)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Part, fluxes_ideal_gas, std::string("ideal"), 1)->Arg(32)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_Part, divergence_sources, std::string("ideal"), 2)->Arg(32)->Unit(benchmark::kMicrosecond);

@@ -17,14 +17,20 @@
 #include "HydroBase/sweeps.hpp"
 #include "remnant/grid.hpp"
 #include "remnant/thorn_spec.hpp"
+#include "HydroBase/magnetic_field.hpp"
+#include "constrained_transport.hpp"
 #include "groups.hpp"
+#include "mhd_fluxes.hpp"
 #include "rhs.hpp"
+#include "shock_tube_field.hpp"
 
 namespace remnant::grmhd::bench {
 
 class StarBlock {
  public:
-  StarBlock(eos::EOS eos, int n, double extent) : eos_(std::move(eos)) {
+  // magnetic: a poloidal field (A_phi = A0 varpi^2 (1 - r^2/49)^3, b^2 / 2p ~ 1e-2 at the centre)
+  // evolved by constrained transport as GRMHD_RHS_MHD does (without the Grid's edge correction).
+  StarBlock(eos::EOS eos, int n, double extent, bool magnetic = false) : eos_(std::move(eos)), magnetic_(magnetic) {
     // The groups as the thorns declare them (thorn.yaml), not a copy of their layout.
     for (const char* thorn : {"HydroBase", "Spacetime", "GRMHD"}) {
       const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/" + thorn + "/thorn.yaml";
@@ -42,6 +48,15 @@ class StarBlock {
     g_.metric = vars_.find("Spacetime::metric");
     g_.flux = {vars_.find("GRMHD::flux_x"), vars_.find("GRMHD::flux_y"), vars_.find("GRMHD::flux_z")};
     matter_ = {g_.cons, g_.prim, g_.metric};
+    for (int d = 0; d < 3; ++d) {
+      const std::string k = std::to_string(d + 1), xyz(1, static_cast<char>('x' + d));
+      mg_.bface[d] = vars_.find("HydroBase::Bface" + k);
+      mg_.bface_rhs[d] = vars_.find("HydroBase::Bface" + k + "_rhs");
+      mg_.ct[d] = vars_.find("GRMHD::ct_" + xyz);
+      mg_.emf[d] = vars_.find("GRMHD::emf_" + xyz);
+    }
+    mg_.bvec = vars_.find("HydroBase::Bvec");
+    if (magnetic_) matter_.bvec = mg_.bvec;
     const double dx = extent / n;
     block_ = std::make_unique<Block>(0, 0, std::array<std::int64_t, 3>{0, 0, 0}, std::array<int, 3>{n, n, n},
                                      std::array<int, 3>{3, 3, 3}, std::array<double, 3>{0, 0, 0},
@@ -61,6 +76,11 @@ class StarBlock {
     Block& b = *block_;
     const double* u = b.data(g_.cons);
     std::copy(u, u + b.size(g_.cons), u0_.begin());
+    if (magnetic_)
+      for (int d = 0; d < 3; ++d) {
+        const double* f = b.data(mg_.bface[d]);
+        std::copy(f, f + b.size(mg_.bface[d]), b0_[d].begin());
+      }
     static constexpr double a[3] = {0.0, 0.75, 1.0 / 3.0}, w[3] = {1.0, 0.25, 2.0 / 3.0};
     for (int s = 0; s < 3; ++s) {
       fluxes();
@@ -73,15 +93,45 @@ class StarBlock {
           x = a[s] * u0_[std::size_t(off + i + j * uc.sj + k * uc.sk)] + w[s] * (x + dt * r(i, j, k));
         });
       }
+      if (magnetic_)
+        for (int d = 0; d < 3; ++d) {
+          Field f = b.field(mg_.bface[d], 0), r = b.field(mg_.bface_rhs[d], 0);
+          const std::ptrdiff_t off = f.origin - b.data(mg_.bface[d]);
+          for (int k = 0; k < b.n[2] + (d == 2); ++k)
+            for (int j = 0; j < b.n[1] + (d == 1); ++j)
+              for (int i = 0; i < b.n[0] + (d == 0); ++i) {
+                double& x = f(i, j, k);
+                x = a[s] * b0_[d][std::size_t(off + i + j * f.sj + k * f.sk)] + w[s] * (x + dt * r(i, j, k));
+              }
+        }
       recover();
     }
   }
+  // Bytes per interior cell of the groups this run has (a magnetic-field group only when magnetic),
+  // ghosts and staggered points included.
+  double bytes_per_cell() const {
+    double bytes = 0;
+    for (const auto& spec : vars_.groups()) {
+      if (!magnetic_ && !spec.condition.empty()) continue;
+      bytes += 8.0 * double(block_->size(spec.id));
+    }
+    return bytes / double(cells());
+  }
   void recover() {
+    if (magnetic_) hydrobase::cell_centred_field({mg_.bface, mg_.bvec, g_.metric}, *block_);
     std::string fatal;
     hydrobase::recover_block(eos_, settings_, atm_, matter_, *block_, diag_, fatal);
   }
-  void fluxes() { compute_block_fluxes(eos_, rhs_settings_, g_, *block_); }
-  void divergence() { compute_block_rhs(g_, *block_); }
+  void fluxes() {
+    if (!magnetic_) return compute_block_fluxes(eos_, rhs_settings_, g_, *block_);
+    compute_block_fluxes_mhd(eos_, rhs_settings_, g_, mg_, *block_);
+    edge_emfs(EmfScheme::uct_hll, mg_, *block_);
+  }
+  void divergence() {
+    if (!magnetic_) return compute_block_rhs(g_, *block_);
+    face_rhs(mg_, *block_);
+    compute_block_rhs_mhd(g_, mg_.bvec, *block_);
+  }
   const con2prim::Diagnostics& diagnostics() const { return diag_; }
 
  private:
@@ -129,13 +179,53 @@ class StarBlock {
             b.field(g_.prim, Prim::idx::cs2)(i, j, k) = th.cs2;
           }
     });
+    if (magnetic_) fill_field();
     con2prim::Diagnostics d;
     hydrobase::prim_to_cons_block(eos_, settings_, atm_, matter_, b, d);
+  }
+
+  // The face fields of the potential on every face (ghosts too: no exchange here), Bvec everywhere.
+  void fill_field() {
+    Block& b = *block_;
+    // Confined to r < 7 (inside the star, radius about 8.1): no field in the atmosphere.
+    const double a0 = 4e-4;
+    const CovariantPotential A = [a0](const Point3& x) {
+      const double s = std::max(1.0 - (x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) / 49.0, 0.0);
+      const double g = a0 * s * s * s;
+      return std::array<double, 3>{-x[1] * g, x[0] * g, 0.0};
+    };
+    add_potential_field(A, mg_.bface, b, 3);
+    const Field psi = b.field(g_.metric, Metric::idx::psi);
+    for (int d = 0; d < 3; ++d) {
+      const Field f = b.field(mg_.bface[d], 0), out = b.field(mg_.bvec, d);
+      for (int k = -3; k < b.n[2] + 3; ++k)
+        for (int j = -3; j < b.n[1] + 3; ++j)
+          for (int i = -3; i < b.n[0] + 3; ++i) {
+            const double p2 = psi(i, j, k) * psi(i, j, k);
+            f(i, j, k) *= p2 * p2 * p2;  // psi^6 B (the outermost ghost faces keep B: never read)
+            out(i, j, k) = 0;
+          }
+    }
+    for (int d = 0; d < 3; ++d) {
+      const Field f = b.field(mg_.bface[d], 0), out = b.field(mg_.bvec, d);
+      for (int k = -3; k < b.n[2] + 3 - (d == 2); ++k)
+        for (int j = -3; j < b.n[1] + 3 - (d == 1); ++j)
+          for (int i = -3; i < b.n[0] + 3 - (d == 0); ++i) {
+            int up[3] = {i, j, k};
+            ++up[d];
+            const double p2 = psi(i, j, k) * psi(i, j, k);
+            out(i, j, k) = 0.5 * (f(i, j, k) + f(up[0], up[1], up[2])) / (p2 * p2 * p2);
+          }
+    }
+    for (int d = 0; d < 3; ++d) b0_[d].resize(b.size(mg_.bface[d]));
   }
 
   eos::EOS eos_;
   VariableRegistry vars_;
   Groups g_;
+  MhdGroups mg_;
+  bool magnetic_ = false;
+  std::array<std::vector<double>, 3> b0_;
   hydrobase::MatterGroups matter_;
   std::unique_ptr<Block> block_;
   atmosphere::Atmosphere atm_;

@@ -10,6 +10,7 @@
 #include "mass_budget.hpp"
 #include "mhd_fluxes.hpp"
 #include "rhs.hpp"
+#include "alfven_wave.hpp"
 #include "shock_tube.hpp"
 #include "shock_tube_field.hpp"
 #include "time_step.hpp"
@@ -26,7 +27,25 @@ RhsSettings rhs_settings(const Context& ctx) {
   return s;
 }
 
+// A magnetic-field parameter in a run without a field is an input error, not silently ignored.
+void check_field_parameters(const Context& ctx) {
+  if (hydrobase::magnetic_field_evolved(ctx)) return;
+  auto refuse = [&](const char* name) {
+    throw InputError(ctx.params().origin("GRMHD", name),
+                     std::string("GRMHD::") + name +
+                         " is a magnetic-field parameter, but HydroBase::magnetic_field = none: set "
+                         "HydroBase::magnetic_field: evolved, or remove it");
+  };
+  for (const char* name : {"shock_field_left", "shock_field_right"})
+    for (double v : ctx.param<std::vector<double>>("GRMHD", name))
+      if (v != 0) refuse(name);
+  if (ctx.param<double>("GRMHD", "field_potential_amplitude") != 0) refuse("field_potential_amplitude");
+  if (ctx.param<std::string>("GRMHD", "emf") != "uct_hll") refuse("emf");
+  if (ctx.param<std::string>("GRMHD", "initial_data") == "alfven_wave") refuse("initial_data");
+}
+
 void check_parameters(Context& ctx) {
+  check_field_parameters(ctx);
   const RhsSettings s = rhs_settings(ctx);
   for (Block* b : ctx.grid().local_blocks())
     for (int d = 0; d < 3; ++d)
@@ -107,10 +126,16 @@ REMNANT_REGISTER_THORN(GRMHD) {
   using namespace remnant::grmhd;
   reg.function("GRMHD_CheckParameters", check_parameters);
   reg.function("GRMHD_ShockTube", shock_tube_initial_data);
-  reg.function("GRMHD_ShockTubeField", shock_tube_field);
+  reg.function("GRMHD_AlfvenWave", alfven_wave_initial_data);
+  reg.function("GRMHD_InitialField", [](remnant::Context& ctx) {
+    const std::string& id = ctx.param<std::string>("GRMHD", "initial_data");
+    if (id == "shock_tube") shock_tube_field(ctx);
+    if (id == "alfven_wave") alfven_wave_field(ctx);
+  });
   reg.function("GRMHD_RHS", calc_rhs);
   reg.function("GRMHD_RHS_MHD", calc_rhs_mhd);
   reg.function("GRMHD_CellCentredField", cell_centred_field);
+  reg.function("GRMHD_CellCentredFieldAfterRegrid", cell_centred_field);
   reg.function("GRMHD_Con2Prim", con2prim);
   reg.inverse_dt_limit(inverse_dt);
 }

@@ -20,7 +20,7 @@ CovariantPotential test_potential(CoordinateSystem cs, double a0) {
     case CoordinateSystem::cylindrical:
       return [a0](const Point3& x) {
         const double R2 = x[0] * x[0];
-        return std::array<double, 3>{0.0, a0 * R2 * std::sin(x[2]), a0 * R2 * std::cos(k * x[1])};
+        return std::array<double, 3>{0.0, a0 * x[0] * std::sin(x[2]), a0 * R2 * std::cos(k * x[1])};
       };
     case CoordinateSystem::spherical:
       return [a0](const Point3& x) {
@@ -31,7 +31,7 @@ CovariantPotential test_potential(CoordinateSystem cs, double a0) {
   return {};
 }
 
-void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& bface, Block& b) {
+void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& bface, Block& b, int ghost_layers) {
   bool used[3];
   for (int d = 0; d < 3; ++d) used[d] = direction_used(b, d);
   // The line integral of A_c along the edge of direction c at face indices id (cell id[c]).
@@ -44,11 +44,15 @@ void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& 
   for (int a = 0; a < 3; ++a) {
     const int bb = (a + 1) % 3, c = (a + 2) % 3;
     const Field f = b.field(bface[a], 0);
-    const int ext[3] = {b.n[0] + (used[0] && a == 0), b.n[1] + (used[1] && a == 1), b.n[2] + (used[2] && a == 2)};
+    int lo[3], hi[3];
+    for (int d = 0; d < 3; ++d) {
+      lo[d] = used[d] ? -ghost_layers : 0;
+      hi[d] = b.n[d] + (used[d] ? ghost_layers + (a == d) : 0);
+    }
     int id[3];
-    for (id[2] = 0; id[2] < ext[2]; ++id[2])
-      for (id[1] = 0; id[1] < ext[1]; ++id[1])
-        for (id[0] = 0; id[0] < ext[0]; ++id[0]) {
+    for (id[2] = lo[2]; id[2] < hi[2]; ++id[2])
+      for (id[1] = lo[1]; id[1] < hi[1]; ++id[1])
+        for (id[0] = lo[0]; id[0] < hi[0]; ++id[0]) {
           // Phi_a = d_b A_c - d_c A_b around the face.
           double flux = 0;
           if (used[bb]) {
@@ -68,7 +72,6 @@ void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& 
 }
 
 void shock_tube_field(Context& ctx) {
-  if (ctx.param<std::string>("GRMHD", "initial_data") != "shock_tube") return;
   const auto& left = ctx.param<std::vector<double>>("GRMHD", "shock_field_left");
   const auto& right = ctx.param<std::vector<double>>("GRMHD", "shock_field_right");
   if (left[0] != right[0])

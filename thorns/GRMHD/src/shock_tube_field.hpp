@@ -4,9 +4,9 @@
 // B^1 would not be divergence-free and is refused), plus, for tests in any coordinate system, the
 // field of a smooth covariant vector potential of amplitude GRMHD::field_potential_amplitude:
 //   Cartesian:   A = A0 (sin 2pi y sin 2pi z, sin 2pi z sin 2pi x, sin 2pi x sin 2pi y)
-//   cylindrical: A = A0 (0, R^2 sin phi, R^2 cos 2pi z)            (R, z, phi)
+//   cylindrical: A = A0 (0, R sin phi, R^2 cos 2pi z)               (R, z, phi; A_z = A0 y: a uniform B^x)
 //   spherical:   A = A0 (r^2 cos theta, 0, r^2 sin^2 theta cos 2pi r)   (r, theta, phi)
-// (regular on the axis and at the origin). Face values are circulations of A around the face (edge
+// (smooth through the axis and the origin). Face values are circulations of A around the face (edge
 // integrals by the midpoint rule) over the exact face area, so the discrete divergence of every cell
 // is zero to round-off whatever the quadrature. Flat space: psi = 1 is assumed (psi^6 B = B).
 #include <array>
@@ -22,10 +22,11 @@ using CovariantPotential = std::function<std::array<double, 3>(const Point3&)>;
 // The test potential above for a coordinate system.
 CovariantPotential test_potential(CoordinateSystem cs, double amplitude);
 
-// Adds to Bface1..3 (groups bface) of the interior faces the face fluxes / area of potential A.
-void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& bface, Block& b);
+// Adds to Bface1..3 (groups bface) of the interior faces the face fluxes / area of potential A; with
+// ghost_layers > 0 also to that many layers of ghost faces in the used directions.
+void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& bface, Block& b, int ghost_layers = 0);
 
-// GRMHD_ShockTubeField: the uniform left/right fields plus the potential's.
+// The shock tube's face fields (GRMHD_InitialField): the uniform left/right fields plus the potential's.
 void shock_tube_field(Context& ctx);
 
 }  // namespace remnant::grmhd

@@ -1,8 +1,12 @@
 // HydroBase: binds the scheduled functions of thorn.yaml.
+#include <mpi.h>
+
 #include <algorithm>
+#include <string>
 
 #include "HydroBase/magnetic_field.hpp"
 #include "HydroBase/sweeps.hpp"
+#include "remnant/error.hpp"
 #include "remnant/registrar.hpp"
 
 namespace remnant::hydrobase {
@@ -14,11 +18,28 @@ void initial_cons(Context& ctx) {
   const auto& atm = ctx.service<atmosphere::Atmosphere>("atmosphere");
   const MatterGroups g = MatterGroups::of(ctx);
   con2prim::Diagnostics diag;
+  double max_sigma = 0;  // b^2/rho outside the atmosphere (with a field)
   for (Block* b : ctx.grid().local_blocks()) {
-    prim_to_cons_block(eos, settings, atm, g, *b, diag);
+    prim_to_cons_block(eos, settings, atm, g, *b, diag, g.bvec >= 0 ? &max_sigma : nullptr);
     std::fill_n(b->data(g.budget), b->size(g.budget), 0.0);  // the budget starts with the evolution
   }
   report_recovery(ctx, diag, "HydroBase_InitialCons");
+  if (g.bvec >= 0) {
+    MPI_Allreduce(MPI_IN_PLACE, &max_sigma, 1, MPI_DOUBLE, MPI_MAX, ctx.comm());
+    if (max_sigma > atm.sigma_max)
+      throw InputError(ctx.params().origin("Atmosphere", "sigma_max"),
+                       "the initial magnetic field makes b^2/rho = " + std::to_string(max_sigma) +
+                           " outside the atmosphere, above Atmosphere::sigma_max = " + std::to_string(atm.sigma_max) +
+                           ": weaken the field or raise the cap");
+  }
+}
+
+// Bvec = Bface / psi^6 with the current psi: the metric solver changes psi under the densitised face
+// fields, so its hooks refresh the cell-centred field before using it (no-op without a field).
+void refresh_field(Context& ctx) {
+  const FieldGroups g = FieldGroups::of(ctx);
+  if (g.bvec < 0) return;
+  for (Block* b : ctx.grid().local_blocks()) cell_centred_field(g, *b);
 }
 
 }  // namespace
@@ -36,14 +57,17 @@ REMNANT_REGISTER_THORN(HydroBase) {
   reg.function("HydroBase_MatterSources", fill_matter_sources);
   reg.function("HydroBase_InitialMatterSources", fill_matter_sources);
   reg.function("HydroBase_ConservedFromPrimitives", [](remnant::Context& ctx) {
+    refresh_field(ctx);
     conserved_from_primitives(ctx);
     fill_matter_sources(ctx);
   });
   reg.function("HydroBase_RecoverInitialPrimitives", [](remnant::Context& ctx) {
+    refresh_field(ctx);
     recover_all(ctx, "HydroBase_RecoverInitialPrimitives");
     fill_matter_sources(ctx);
   });
   reg.function("HydroBase_RecoverWithNewMetric", [](remnant::Context& ctx) {
+    refresh_field(ctx);
     recover_all(ctx, "HydroBase_RecoverWithNewMetric");
     fill_matter_sources(ctx);
   });

@@ -1,5 +1,6 @@
 #include "HydroBase/sweeps.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "Con2Prim/error_policy.hpp"
@@ -71,6 +72,21 @@ struct CellAccess {
   }
 };
 
+// The magnetisation cap of the atmosphere (Atmosphere::limit_magnetisation): an atmosphere cell
+// (v = 0, so b^2 = B^i B_i) whose field exceeds sigma_max rho gets the larger rho, p, eps, cs2 from
+// the EOS at (rho, T_atm, Ye_atm), and its conserved variables. Returns whether it changed.
+template <class E>
+bool cap_atmosphere_magnetisation(const E& eos, const atmosphere::Atmosphere& atm, const con2prim::Metric3& m,
+                                  con2prim::Primitives& p, con2prim::Conserved& c) {
+  if (p.rho != atm.rho || !atm.limit_magnetisation(p, m.norm2_up(p.B))) return false;
+  const eos::Thermo th = eos.thermo(p.rho, p.T, p.ye);
+  p.press = th.press;
+  p.eps = th.eps;
+  p.cs2 = th.cs2;
+  c = con2prim::prim_to_cons(p, m);
+  return true;
+}
+
 template <class F>
 void for_cells(Block& b, const CellAccess& acc, F&& f) {
   const bool cartesian = b.coordinates == CoordinateSystem::cartesian;
@@ -96,8 +112,10 @@ void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::A
     con2prim::Conserved c = acc.load_cons(o, 1.0 / psi6);
     con2prim::Primitives p;
     p.T = acc.prim[Prim::idx::temperature].origin[o];
-    const con2prim::Report r = con2prim::recover(eos, s, atm, cell_metric(psi4, fd), c, p);
+    const con2prim::Metric3 m = cell_metric(psi4, fd);
+    const con2prim::Report r = con2prim::recover(eos, s, atm, m, c, p);
     diag.add(r);
+    if (acc.magnetic) cap_atmosphere_magnetisation(eos, atm, m, p, c);
     if (r.fatal() && fatal_cell.empty()) {
       const std::ptrdiff_t i = o % acc.met[0].sj, j = (o / acc.met[0].sj) % (acc.met[0].sk / acc.met[0].sj),
                            k = o / acc.met[0].sk;
@@ -118,7 +136,7 @@ void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::A
 template <class E>
 void prim_to_cons_impl(const E& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
                        const MatterGroups& g, Block& b,
-                       con2prim::Diagnostics& diag) {
+                       con2prim::Diagnostics& diag, double* max_sigma) {
   const CellAccess acc(g, b);
   for_cells(b, acc, [&](std::ptrdiff_t o, double psi4, double psi6, const std::array<double, 3>& fd) {
     con2prim::Primitives p;
@@ -131,8 +149,13 @@ void prim_to_cons_impl(const E& eos, const con2prim::Settings& s, const atmosphe
     const con2prim::Metric3 m = cell_metric(psi4, fd);
     if (atm.is_atmosphere(p.rho)) {
       atm.set(p);
+      if (acc.magnetic) {
+        con2prim::Conserved unused;
+        cap_atmosphere_magnetisation(eos, atm, m, p, unused);
+      }
     } else {
       p.W = 1.0 / std::sqrt(1.0 - m.norm2_up(p.v));
+      if (max_sigma) *max_sigma = std::max(*max_sigma, con2prim::b_squared(p, m) / p.rho);
       diag.add_rules(con2prim::apply_error_policy(eos, s.policy, p, con2prim::ThermoInput::eps));
       const eos::Thermo th = eos.thermo(p.rho, p.T, p.ye);
       p.press = th.press;
@@ -152,8 +175,8 @@ void recover_block(const eos::EOS& eos, const con2prim::Settings& s, const atmos
 }
 
 void prim_to_cons_block(const eos::EOS& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
-                        const MatterGroups& g, Block& b, con2prim::Diagnostics& diag) {
-  eos.visit([&](const auto& e) { prim_to_cons_impl(e, s, atm, g, b, diag); });
+                        const MatterGroups& g, Block& b, con2prim::Diagnostics& diag, double* max_sigma) {
+  eos.visit([&](const auto& e) { prim_to_cons_impl(e, s, atm, g, b, diag, max_sigma); });
 }
 
 }  // namespace remnant::hydrobase

@@ -21,12 +21,14 @@ struct AtmosphereConfig {
   double poly_K = 100.0;   // analytic EOS only
   double poly_gamma = 2.0;
   double ye_analytic = 0.5;
+  double sigma_max = 1000;  // b^2/rho cap in atmosphere cells
 };
 
 inline void check(const AtmosphereConfig& c) {
   if (!(c.rho_thr > 0)) throw std::invalid_argument("atmosphere: rho_thr must be > 0");
   if (!(c.xi > 0 && c.xi <= 1)) throw std::invalid_argument("atmosphere: xi must be in (0, 1]");
   if (!(c.poly_K > 0 && c.poly_gamma > 1)) throw std::invalid_argument("atmosphere: need K > 0 and Gamma > 1");
+  if (!(c.sigma_max > 0)) throw std::invalid_argument("atmosphere: sigma_max must be > 0");
 }
 
 template <class E>
@@ -70,8 +72,11 @@ Atmosphere tabulated_atmosphere(const eos::Tabulated<C>& eos, const AtmosphereCo
 
 template <class E>
 Atmosphere make_atmosphere(const E& eos, const AtmosphereConfig& c) {
-  if constexpr (requires { eos.table(); }) return tabulated_atmosphere(eos, c);
-  else return polytropic_atmosphere(eos, c);
+  Atmosphere a;
+  if constexpr (requires { eos.table(); }) a = tabulated_atmosphere(eos, c);
+  else a = polytropic_atmosphere(eos, c);
+  a.sigma_max = c.sigma_max;
+  return a;
 }
 
 // For the shared EOS handle (dispatches once).

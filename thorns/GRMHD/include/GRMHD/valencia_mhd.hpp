@@ -30,14 +30,14 @@ struct MagneticState {
   double b2 = 0;                        // b^mu b_mu
 };
 
-// Needs s.W, s.v_dn (set_velocity_from_wv or equivalent) and the metric.
+// Needs s.v_dn and s.v2 consistent with s.W (set_velocity_from_wv or equivalent) and the metric.
 inline MagneticState magnetic_state(const FluidState& s, const PointMetric& m, double B1, double B2, double B3) {
   MagneticState g;
   g.B = {B1, B2, B3};
   for (int i = 0; i < 3; ++i) g.B_dn[i] = m.g_dn[i] * g.B[i];
   g.B2 = g.B[0] * g.B_dn[0] + g.B[1] * g.B_dn[1] + g.B[2] * g.B_dn[2];
   g.Bv = g.B[0] * s.v_dn[0] + g.B[1] * s.v_dn[1] + g.B[2] * s.v_dn[2];
-  g.b2 = g.B2 / (s.W * s.W) + g.Bv * g.Bv;
+  g.b2 = g.B2 * (1.0 - s.v2) + g.Bv * g.Bv;  // 1/W^2 = 1 - v^2: no division in the face loop
   return g;
 }
 
@@ -66,7 +66,7 @@ inline void flux_mhd(int d, const FluidState& s, const MagneticState& g, const P
   const double Bd = g.B[d];
   for (int c = 0; c < kNumCons; ++c) f[c] = u[c] * vt;
   // b_i / W = B_i / W^2 + (B.v) v_i
-  const double iW2 = 1.0 / (s.W * s.W);
+  const double iW2 = 1.0 - s.v2;
   for (int i = 0; i < 3; ++i) f[kS1 + i] -= m.alpha * ((g.B_dn[i] * iW2 + g.Bv * s.v_dn[i]) * Bd);
   f[kS1 + d] += ap;
   f[kTau] += ap * s.v[d] - m.alpha * (g.Bv * Bd);

@@ -21,15 +21,17 @@ struct MatterGroups {
 };
 
 // cons -> prim with the paper's recovery; cons is overwritten with the conserved variables of the
-// corrected primitives (atmosphere, policy).
+// corrected primitives (atmosphere, policy; with a field, the atmosphere's b^2/rho cap).
 // The first cell in which a fatal rule fired, if any, is described in `fatal_cell`.
 void recover_block(const eos::EOS& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
                    const MatterGroups& g, Block& b, con2prim::Diagnostics& diag, std::string& fatal_cell);
 
 // Initial data: the primitives (rho, v, eps, Ye) are made consistent (atmosphere, error policy with
-// eps trusted, T from eps, p and cs2 from the EOS) and the conserved variables computed.
+// eps trusted, T from eps, p and cs2 from the EOS) and the conserved variables computed. With a
+// field (g.bvec): the atmosphere's magnetisation cap, and *max_sigma (if given) raised to the largest
+// b^2/rho of the cells outside the atmosphere.
 void prim_to_cons_block(const eos::EOS& eos, const con2prim::Settings& s, const atmosphere::Atmosphere& atm,
-                        const MatterGroups& g, Block& b, con2prim::Diagnostics& diag);
+                        const MatterGroups& g, Block& b, con2prim::Diagnostics& diag, double* max_sigma = nullptr);
 
 // Every local block through recover_block with the published EOS, con2prim settings and atmosphere;
 // the counts are reported (and a fatal policy rule stops the run) as `where`. Collective.
