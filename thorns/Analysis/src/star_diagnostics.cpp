@@ -78,25 +78,30 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   return d;
 }
 
-std::string tsv_header(bool rotation) {
+std::string tsv_header(bool rotation, bool magnetic) {
   std::string h = "# iteration\ttime\trho_c\trho_max\talpha_c\talpha_min\tpsi_c\tpsi_max\trest_mass\toutflow\t"
                   "atmosphere_source\tmass_budget";
   if (rotation) h += "\tJ\tT_over_W\tOmega_c\tM_komar\tmode_m1\tmode_m2";
+  if (magnetic) h += "\tdivB_max\tE_mag\tE_mag_pol\tE_mag_tor\tB_max";
   return h + "\n";
 }
 
 std::string tsv_line(const StarDiagnostics& d) {
-  char b[768];
-  std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n",
-                static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
-                d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
-  if (!d.has_rotation) return b;
-  const RotationDiagnostics& r = d.rotation;
-  std::string line(b, std::strlen(b) - 1);  // without the newline
-  char c[256];
-  std::snprintf(c, sizeof c, "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\n", r.J, r.T_over_W, r.omega_c, r.M_komar,
-                r.mode_m1, r.mode_m2);
-  return line + c;
+  char b[1024];
+  int n = std::snprintf(b, sizeof b, "%lld\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g",
+                        static_cast<long long>(d.iteration), d.time, d.rho_c, d.rho_max, d.alpha_c, d.alpha_min, d.psi_c,
+                        d.psi_max, d.rest_mass, d.outflow, d.atmosphere_source, d.mass_budget);
+  if (d.has_rotation) {
+    const RotationDiagnostics& r = d.rotation;
+    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", r.J,
+                       r.T_over_W, r.omega_c, r.M_komar, r.mode_m1, r.mode_m2);
+  }
+  if (d.magnetic) {
+    const MagneticDiagnostics& m = *d.magnetic;
+    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g", m.divB_max, m.E_mag,
+                       m.E_mag_pol, m.E_mag_tor, m.B_max_gauss);
+  }
+  return std::string(b) + "\n";
 }
 
 }  // namespace remnant::analysis

@@ -5,6 +5,9 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
+#include "Analysis/magnetic_diagnostics.hpp"
 #include "Analysis/rotation_diagnostics.hpp"
 #include "remnant/context.hpp"
 
@@ -20,6 +23,8 @@ struct StarDiagnostics {
   double outflow = 0, atmosphere_source = 0, mass_budget = 0;
   bool has_rotation = false;  // Analysis::rotation: the columns of `rotation` follow mass_budget
   RotationDiagnostics rotation;
+  // Runs with evolved B only (the extra columns).
+  std::optional<MagneticDiagnostics> magnetic;
 };
 
 struct History {
@@ -28,7 +33,9 @@ struct History {
 
 // Collective over the grid's ranks; every rank gets the same values.
 StarDiagnostics star_diagnostics(Context& ctx);
-std::string tsv_header(bool rotation);
+// The columns of every run, then those of Analysis::rotation (J ... mode_m2), then with evolved B
+// divB_max, E_mag, E_mag_pol, E_mag_tor, B_max.
+std::string tsv_header(bool rotation, bool magnetic = false);
 std::string tsv_line(const StarDiagnostics& d);
 
 }  // namespace remnant::analysis
