@@ -1,12 +1,12 @@
 #pragma once
-// Face-normal magnetic fields of a Cartesian block, written so that the discrete divergence
+// Face-normal magnetic fields of the problems, written so that the discrete divergence
 // (1/V) sum(+-area * value) of every cell is zero to round-off:
-// - from a potential A_z(x, y) sampled at the cell edges along z: the flux through a face is the
-//   circulation of A around it (Stokes), flux_x(i, j, k) = lz (A(x_i, y_j+1) - A(x_i, y_j)),
-//   flux_y(i, j, k) = -lz (A(x_i+1, y_j) - A(x_i, y_j)), nothing through the z faces;
+// - from a potential A_z(x, y) through HydroBase's vector-potential library (the flux through a
+//   face is the circulation of A around it; edge integrals shared by neighbouring faces);
 // - for a field that varies along x only (the 1D Riemann problems): B^x uniform on the x faces,
 //   B^y and B^z of the cell on its y and z faces (each cell's pair of transverse faces is equal).
 // Values are flux / exact face area (the data model's convention, flat space: psi = 1).
+#include <array>
 #include <functional>
 
 #include "remnant/grid.hpp"
@@ -15,7 +15,7 @@ namespace remnant::mhd_tests {
 
 using Potential = std::function<double(double x, double y)>;
 
-// Interior faces (block faces included) of the three face groups.
+// Interior faces (block faces included) of the three face groups, Cartesian blocks.
 void faces_from_potential(Block& b, const Potential& Az, const Field& bx, const Field& by, const Field& bz);
 
 // B(x) = (Bx, By(x), Bz(x)) with Bx the same everywhere; `transverse(x)` gives {By, Bz} at x.
