@@ -77,7 +77,7 @@ double interface_mismatch(GridDriver& grid, int bx, int by) {
 LoopRun run(int scale, const std::vector<std::string>& extra = {}) {
   static const ThornCatalog catalog(remnant_compiled_thorns());
   SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/field_loop_2d.yaml";
+  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/field_loop_ct_example.yaml";
   o.quiet = true;
   const auto out = std::filesystem::temp_directory_path() /
                    ("remnant_field_loop_" + std::to_string(::getpid()) + "_" + std::to_string(scale));

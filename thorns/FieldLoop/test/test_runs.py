@@ -112,7 +112,7 @@ def main():
              "restart_1to2": lambda r: mode_restart(r, 1, 2), "restart_2to1": lambda r: mode_restart(r, 2, 1),
              "grid_output": mode_grid_output, "moving": mode_moving}
     remnant_runs.main(
-        lambda a: remnant_runs.Runner(a, os.path.join(a.source_dir, "parfiles", "field_loop_2d.yaml"), BASE), modes)
+        lambda a: remnant_runs.Runner(a, os.path.join(a.source_dir, "parfiles", "field_loop_ct_example.yaml"), BASE), modes)
 
 
 if __name__ == "__main__":
