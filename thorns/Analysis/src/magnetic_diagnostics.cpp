@@ -25,8 +25,14 @@ double densitised_magnitude(const Block& b, const std::array<Field, 3>& faces, i
 
 }  // namespace
 
+double densitised_field_max(const Block& b, const std::array<Field, 3>& faces) {
+  double m = 0;
+  for_interior(b, [&](int i, int j, int k) { m = std::max(m, densitised_magnitude(b, faces, i, j, k)); });
+  return m;
+}
+
 MagneticBlockMaxima magnetic_block_pass(const Block& b, const std::array<Field, 3>& faces, Field psi,
-                                        const std::array<Field, 3>& densities) {
+                                        const std::array<Field, 3>& densities, double scale_floor) {
   MagneticBlockMaxima s;
   const CoordinateSystem c = b.coordinates;
   bool used[3];
@@ -36,7 +42,7 @@ MagneticBlockMaxima magnetic_block_pass(const Block& b, const std::array<Field, 
     const Point3 f = coords::metric_diagonal(c, x);
     // The cell's smallest width and the largest |B| around it.
     double h = std::numeric_limits<double>::infinity();
-    double nb = densitised_magnitude(b, faces, i, j, k);
+    double nb = std::max(scale_floor, densitised_magnitude(b, faces, i, j, k));
     for (int d = 0; d < 3; ++d) {
       if (!used[d]) continue;
       h = std::min(h, std::sqrt(f[static_cast<std::size_t>(d)]) * b.dx[static_cast<std::size_t>(d)]);
@@ -81,11 +87,15 @@ MagneticDiagnostics magnetic_diagnostics(Context& ctx) {
   for (int g : face) ctx.check_access(g);
   ctx.check_access(density);
   using Metric = vars::Spacetime::metric;
+  double field_max = 0;
+  for (Block* b : ctx.grid().local_blocks())
+    field_max = std::max(field_max, densitised_field_max(*b, {b->field(face[0], 0), b->field(face[1], 0), b->field(face[2], 0)}));
+  MPI_Allreduce(MPI_IN_PLACE, &field_max, 1, MPI_DOUBLE, MPI_MAX, ctx.grid().comm());
   double maxima[2] = {0, 0};  // divB scaled, B_max
   for (Block* b : ctx.grid().local_blocks()) {
     const std::array<Field, 3> F{b->field(face[0], 0), b->field(face[1], 0), b->field(face[2], 0)};
     const std::array<Field, 3> E{b->field(density, 0), b->field(density, 1), b->field(density, 2)};
-    const MagneticBlockMaxima s = magnetic_block_pass(*b, F, Metric(ctx, *b).field(Metric::idx::psi), E);
+    const MagneticBlockMaxima s = magnetic_block_pass(*b, F, Metric(ctx, *b).field(Metric::idx::psi), E, kDivBScaleFloor * field_max);
     maxima[0] = std::max(maxima[0], s.div_scaled);
     maxima[1] = std::max(maxima[1], s.B);
   }

@@ -22,12 +22,19 @@ struct MagneticDiagnostics {
 // One block: writes the energy densities (per unit coordinate volume: (1/2) psi^6 B^2 and its
 // poloidal and toroidal parts) at interior cells into `densities` and returns the block's maxima.
 // The face fields need valid ghosts (the neighbourhood of divB_max).
+// The neighbourhood scale of divB_max is floored at `scale_floor` (the coordinator passes
+// kDivBScaleFloor times the grid's largest |psi^6 B|): where the field is far weaker than its
+// maximum, e.g. behind a field loop that moved on, the divergence is the round-off of the field
+// that was there, and is measured against that field's size, not against the weak remainder.
+inline constexpr double kDivBScaleFloor = 0.1;
 struct MagneticBlockMaxima {
-  double div_scaled = 0;  // max |div| h / neighbourhood max |B|
+  double div_scaled = 0;  // max |div| h / max(neighbourhood max |B|, scale_floor)
   double B = 0;           // max sqrt(gamma_ij B^i B^j), code units
 };
 MagneticBlockMaxima magnetic_block_pass(const Block& b, const std::array<Field, 3>& faces, Field psi,
-                                        const std::array<Field, 3>& densities);
+                                        const std::array<Field, 3>& densities, double scale_floor = 0);
+// max over the block's interior cells of |psi^6 B| (flat orthonormal norm): the scale of the floor.
+double densitised_field_max(const Block& b, const std::array<Field, 3>& faces);
 
 // Collective over the grid's ranks.
 MagneticDiagnostics magnetic_diagnostics(Context& ctx);
