@@ -26,5 +26,9 @@ run rns_cyl_2d rns_uniform_cyl_2d.yaml MoL::max_iterations=3 RotatingStar::nr=20
 run shocktube shocktube_mm1.yaml MoL::max_iterations=3
 run wavetoy_3d wavetoy_3d.yaml MoL::max_iterations=3
 run advection_amr advection_cartesian_2d.yaml MoL::max_iterations=3
+# Magnetic fields: seeding, GRMHD's (idle) initial field, the xCFC hooks that change Bvec.
+for p in magnetized_tov_cyl_2d magnetized_tov_sph_2d magnetized_tov_cart_3d toroidal_tov_sph_2d; do
+  run "$p" "$p.yaml" MoL::max_iterations=2 XCFC::solve_every=1
+done
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]
