@@ -25,8 +25,10 @@ struct Access {
   std::set<int> reads, writes;
 };
 
+// in_off_group: the item sits (at any depth) in a schedule group whose fixed `if:` is false, so it
+// cannot run either (a function may thus combine two conditions: its own and its group's).
 std::vector<int> resolve_access(const VariableAccess& a, const ScheduleItem& item, const VariableRegistry& vars,
-                                const Parameters& params) {
+                                const Parameters& params, bool in_off_group = false) {
   const std::string& thorn = item.thorn;
   if (a.group == "@evolved") return vars.evolved();
   if (a.group == "@all") {
@@ -45,8 +47,8 @@ std::vector<int> resolve_access(const VariableAccess& a, const ScheduleItem& ite
   if (id < 0) {
     // A group whose `if:` is false: fine for an item that cannot run in this run either.
     if (const VariableGroupSpec* off = vars.without_storage(a.group, thorn)) {
-      const bool item_off = !item.condition.empty() && !condition_is_steerable(item.condition, params) &&
-                            !condition_holds_now(item.condition, params, item.where);
+      const bool item_off = in_off_group || (!item.condition.empty() && !condition_is_steerable(item.condition, params) &&
+                                             !condition_holds_now(item.condition, params, item.where));
       if (item_off) return {};
       throw InputError(a.where, "'" + item.name + "' accesses " + off->full_name() + ", which has no storage in this run " +
                                     "(its 'if: " + off->condition.text + "' is false); give '" + item.name +
@@ -109,6 +111,15 @@ Scheduler::Scheduler(const std::vector<const ThornSpec*>& thorns, const Variable
       c = groups.at(c)->in;
     }
   }
+  // Groups whose `if:` is fixed and false here, or that sit in such a group.
+  for (const auto& [name, g] : groups) {
+    for (const ScheduleItem* c = g; c; c = groups.count(c->in) ? groups.at(c->in) : nullptr)
+      if (!c->condition.empty() && !condition_is_steerable(c->condition, params) &&
+          !condition_holds_now(c->condition, params, c->where)) {
+        off_groups_.insert(name);
+        break;
+      }
+  }
   for (const auto& bin : standard_bins())
     bins_[bin] = build_container(bin, by_container_[bin], impl, vars, params, 0);
 }
@@ -121,9 +132,9 @@ std::vector<ScheduleNode> Scheduler::build_container(const std::string& containe
   std::function<Access(const ScheduleItem*)> access_of = [&](const ScheduleItem* it) {
     Access a;
     for (const auto& r : it->reads)
-      for (int id : resolve_access(r, *it, vars, params)) a.reads.insert(id);
+      for (int id : resolve_access(r, *it, vars, params, off_groups_.count(it->in) > 0)) a.reads.insert(id);
     for (const auto& w : it->writes)
-      for (int id : resolve_access(w, *it, vars, params)) a.writes.insert(id);
+      for (int id : resolve_access(w, *it, vars, params, off_groups_.count(it->in) > 0)) a.writes.insert(id);
     if (it->is_group)
       for (const ScheduleItem* child : by_container_[it->name]) {
         Access c = access_of(child);
@@ -264,12 +275,12 @@ std::vector<ScheduleNode> Scheduler::build_container(const std::string& containe
         throw InputError(it->where, "function " + key + " is declared but thorn " + it->thorn + " registers no implementation");
       node.fn = f->second;
       for (const auto& r : it->reads)
-        for (int id : resolve_access(r, *it, vars, params)) {
+        for (int id : resolve_access(r, *it, vars, params, off_groups_.count(it->in) > 0)) {
           node.reads.push_back(id);
           if (r.region == Region::everywhere) node.reads_everywhere.push_back(id);
         }
       for (const auto& w : it->writes)
-        for (int id : resolve_access(w, *it, vars, params))
+        for (int id : resolve_access(w, *it, vars, params, off_groups_.count(it->in) > 0))
           (w.region == Region::everywhere ? node.writes_everywhere : node.writes_interior).push_back(id);
       node.declared = node.reads;
       node.declared.insert(node.declared.end(), node.writes_interior.begin(), node.writes_interior.end());

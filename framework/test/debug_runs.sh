@@ -34,5 +34,13 @@ if [ -f "$ls220" ]; then
 else
   echo "skip headon_cyl_2d, headon_3d: $ls220 is missing"
 fi
+# Magnetic fields: seeding, GRMHD's (idle) initial field, the xCFC hooks that change Bvec.
+for p in magnetized_tov_cyl_2d magnetized_tov_sph_2d magnetized_tov_cart_3d toroidal_tov_sph_2d; do
+  run "$p" "$p.yaml" MoL::max_iterations=2 XCFC::solve_every=1
+done
+run magnetized_drns magnetized_drns.yaml MoL::max_iterations=2
+for p in field_loop_2d mhd_shocktube_balsara1 rotor_2d; do
+  run "$p" "$p.yaml" MoL::max_iterations=3
+done
 echo "$passed passed, $failed failed"
 [ "$failed" = 0 ]

@@ -441,6 +441,27 @@ TEST(Scheduler, GroupsWithAConditionHaveStorageOnlyWhenItHolds) {
     description: no condition
 )";
   expect_error<InputError>([&] { Harness h({unguarded.c_str()}); h.make(); }, {"Reader", "M::B", "no storage", "M::field == evolved"});
+  // Two conditions: a function with its own `if:` inside a schedule group whose fixed `if:` is false
+  // cannot run either, so it may access the absent group; once the group's `if:` holds, its own
+  // condition decides.
+  const std::string nested = std::string(kConditionalStorage) + R"(  - group: MagneticOnly
+    in: analysis
+    if: "M::field == evolved"
+    description: runs only with storage for B
+  - function: NestedWriter
+    in: MagneticOnly
+    if: "!M::tuned"
+    writes: [B]
+    description: two conditions
+)";
+  {
+    Harness h({nested.c_str()});
+    Scheduler s = h.make();
+  }
+  {
+    Harness h({nested.c_str()}, {{"M::field", "evolved"}});
+    Scheduler s = h.make();
+  }
   // A storage condition on a steerable parameter is refused at the group's line.
   const std::string steerable = std::string(R"(thorn: S
 parameters:

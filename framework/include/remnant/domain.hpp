@@ -54,6 +54,7 @@ struct IndexMap {
   std::array<int, 3> basis_sign{1, 1, 1};      // coordinate basis vectors
   std::array<int, 3> cartesian_sign{1, 1, 1};  // Cartesian axes of the isometry
   bool mirrored = false;                       // orientation reversed (coordinate bookkeeping)
+  bool axial_flipped = false;                  // odd number of `opposite` planes crossed (axial vectors)
 
   std::int64_t apply(int d, std::int64_t i) const {
     return sigma[static_cast<std::size_t>(d)] * i + shift[static_cast<std::size_t>(d)];
@@ -90,7 +91,7 @@ struct IndexMap {
     int s = 1;
     for (int idx : c.indices)
       if (idx >= 0) s *= basis_sign[static_cast<std::size_t>(idx)];
-    if (mirrored && c.kind == TensorKind::axial_vector) s = -s;
+    if (c.kind == TensorKind::axial_vector && mirrored != axial_flipped) s = -s;
     return s;
   }
   // Parity of a component in Cartesian components (x, y, z): the product over its indices of the
@@ -99,16 +100,28 @@ struct IndexMap {
     int s = 1;
     for (int idx : c.indices)
       if (idx >= 0) s *= cartesian_sign[static_cast<std::size_t>(idx)];
-    if (c.kind == TensorKind::axial_vector) s *= cartesian_sign[0] * cartesian_sign[1] * cartesian_sign[2];
+    if (c.kind == TensorKind::axial_vector) {
+      s *= cartesian_sign[0] * cartesian_sign[1] * cartesian_sign[2];
+      if (axial_flipped) s = -s;
+    }
     return s;
   }
 };
+
+// How an axial vector (B) behaves at the reflect face(s) of one direction: `mirror`, its
+// pseudo-vector mirror image (e.g. a toroidal field about z across x = 0, a poloidal field across
+// z = 0), or `opposite`, minus that image (a poloidal field about z across x = 0 and y = 0, a
+// toroidal field symmetric in z across z = 0). Polar tensors are unaffected.
+enum class AxialReflection : std::uint8_t { mirror, opposite };
 
 // The domain's faces: what the ghost images depend on besides the point counts.
 struct DomainFaces {
   CoordinateSystem coordinates = CoordinateSystem::cartesian;
   int dimension = 3;
   std::array<std::array<Boundary, 2>, 3> boundary{};  // [direction][lower, upper]
+  // Per direction, the parity of axial vectors at its reflect faces (the spherical equator
+  // is direction 1, also where the origin's image uses it).
+  std::array<AxialReflection, 3> axial_reflection{AxialReflection::mirror, AxialReflection::mirror, AxialReflection::mirror};
 
   bool used(int d) const { return d < dimension; }
   // Across the axis or the origin of a 3D curvilinear grid the image is the cell at phi + pi.
@@ -151,6 +164,7 @@ struct DomainFaces {
         mirror(d, upper);
         m.basis_sign[ud] = -m.basis_sign[ud];
         m.mirrored = !m.mirrored;
+        if (axial_reflection[ud] == AxialReflection::opposite) m.axial_flipped = !m.axial_flipped;
         // Curvilinear mirror planes are z-planes (the equator, cylindrical z = const).
         m.cartesian_sign[curvilinear ? 2 : ud] = -m.cartesian_sign[curvilinear ? 2 : ud];
         break;
@@ -172,6 +186,7 @@ struct DomainFaces {
           if (dimension >= 2) m.compose(1, -1, theta_cells_to_pi - (1 - stagger[1]));
         } else {
           m.mirrored = !m.mirrored;  // pi - theta, then the equatorial mirror: theta kept
+          if (axial_reflection[1] == AxialReflection::opposite) m.axial_flipped = !m.axial_flipped;
         }
         shift_phi_by_pi();
         // The isometry: 3D the point itself (phi + pi), with the equatorial mirror where theta is

@@ -3,6 +3,7 @@
 // repeated groups, automatic ghost synchronisation, debug checks of declarations, timers.
 #include <chrono>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <vector>
@@ -64,6 +65,7 @@ class Scheduler {
   std::map<std::string, std::vector<ScheduleNode>> bins_;
   std::vector<bool> ghosts_valid_;
   std::map<std::string, std::vector<const ScheduleItem*>> by_container_;
+  std::set<std::string> off_groups_;  // groups with a fixed false `if:` (or inside one)
   const VariableRegistry* vars_;
   bool debug_ = false;
   bool nan_check_ = false;

@@ -283,6 +283,7 @@ Domain AmrGrid::domain() const {
   Domain d;
   d.faces.coordinates = config_.coordinates;
   d.faces.dimension = config_.dimension;
+  d.faces.axial_reflection = config_.axial_reflection;
   for (std::size_t e = 0; e < 3; ++e) {
     d.faces.boundary[e] = {config_.boundary_lower[e], config_.boundary_upper[e]};
     const bool used = static_cast<int>(e) < config_.dimension;

@@ -13,6 +13,7 @@ BoundaryMaps::BoundaryMaps(const GridConfig& config) : config_(config) {
   faces_.coordinates = config.coordinates;
   faces_.dimension = config.dimension;
   for (std::size_t d = 0; d < 3; ++d) faces_.boundary[d] = {config.boundary_lower[d], config.boundary_upper[d]};
+  faces_.axial_reflection = config.axial_reflection;
   if (config.coordinates == CoordinateSystem::spherical && config.dimension >= 2) {
     const double dtheta = (config.xmax[1] - config.xmin[1]) / static_cast<double>(config.ncells[1]);
     theta_cells_to_pi_ = std::llround(std::numbers::pi / dtheta);

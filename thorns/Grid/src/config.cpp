@@ -121,6 +121,7 @@ GridConfig checked(GridConfig c, const SettingLocator& where) {
       c.ncells[i] = 1;
       c.block_size[i] = 1;
       c.boundary_lower[i] = c.boundary_upper[i] = Boundary::outflow;
+      c.axial_reflection[i] = AxialReflection::mirror;
       if (coords::is_angle(cs, d)) {
         c.xmin[i] = 0.0;
         c.xmax[i] = d == 1 && cs == CoordinateSystem::spherical ? kPi : 2 * kPi;
@@ -129,6 +130,12 @@ GridConfig checked(GridConfig c, const SettingLocator& where) {
       }
       continue;
     }
+    if (c.axial_reflection[i] == AxialReflection::opposite && c.boundary_lower[i] != Boundary::reflect &&
+        c.boundary_upper[i] != Boundary::reflect)
+      throw InputError(where("axial_vector_reflection"),
+                       entry("axial_vector_reflection", d) + " = opposite, but direction " + std::to_string(d) +
+                           " has no reflect face (boundary_lower/upper = " + to_string(c.boundary_lower[i]) + ", " +
+                           to_string(c.boundary_upper[i]) + "); use mirror (the default)");
     if (c.ncells[i] < 1)
       throw InputError(where("ncells"), entry("ncells", d) + " = " + std::to_string(c.ncells[i]) + " must be at least 1");
     if (c.block_size[i] < 1)
@@ -252,6 +259,9 @@ GridConfig config_from_parameters(const Parameters& p) {
     c.boundary_lower[i] = parse_boundary(lower[i], p.origin("Grid", "boundary_lower"));
     c.boundary_upper[i] = parse_boundary(upper[i], p.origin("Grid", "boundary_upper"));
   }
+  const auto axial = three<std::string, 3>(p.get<std::vector<std::string>>("Grid", "axial_vector_reflection"), "axial_vector_reflection", p);
+  for (std::size_t i = 0; i < 3; ++i)
+    c.axial_reflection[i] = axial[i] == "opposite" ? AxialReflection::opposite : AxialReflection::mirror;
   c.max_level = static_cast<int>(p.get<std::int64_t>("Grid", "max_level"));
   c.regions = regions_from(p);
   c.refine_variable = p.get<std::string>("Grid", "refine_variable");

@@ -36,6 +36,18 @@ TEST(GridConfig, PeriodicOnOneSideOnlyIsAnError) {
   EXPECT_NE(error_of(c).find("periodic on one side only"), std::string::npos) << error_of(c);
 }
 
+TEST(GridConfig, OppositeAxialParityNeedsAReflectFace) {
+  GridConfig c;
+  c.axial_reflection[1] = AxialReflection::opposite;
+  EXPECT_NE(error_of(c).find("Grid::axial_vector_reflection[1] = opposite, but direction 1 has no reflect face"), std::string::npos)
+      << error_of(c);
+  c.boundary_lower[1] = Boundary::reflect;
+  c.xmin[1] = 0.0;
+  EXPECT_EQ(error_of(c), "");
+  c.dimension = 1;  // unused directions are ignored (reset to mirror)
+  EXPECT_EQ(checked(c).axial_reflection[1], AxialReflection::mirror);
+}
+
 TEST(GridConfig, CurvilinearFacesNeedAxisAndOrigin) {
   GridConfig c;
   c.coordinates = CoordinateSystem::spherical;
@@ -136,6 +148,22 @@ TEST(GridConfig, ParameterErrorsNameTheParfileLocation) {
     EXPECT_NE(std::string(e.what()).find("run.yaml:4:10"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("R cannot be negative"), std::string::npos) << e.what();
   }
+}
+
+// The thorn.yaml keyword reaches the config, and the domain given to other thorns carries it.
+TEST(GridConfig, AxialVectorReflectionIsReadPerDirection) {
+  const ThornSpec spec = grid_thorn_spec();
+  Parameters params;
+  for (const auto& p : spec.parameters) params.declare(p);
+  params.set("Grid", "boundary_lower", std::vector<std::string>{"reflect", "reflect", "reflect"}, {"run.yaml", 2, 1});
+  params.set("Grid", "xmin", std::vector<double>{0, 0, 0}, {"run.yaml", 3, 1});
+  params.set("Grid", "axial_vector_reflection", std::vector<std::string>{"opposite", "opposite", "mirror"}, {"run.yaml", 4, 1});
+  const GridConfig c = config_from_parameters(params);
+  EXPECT_EQ(c.axial_reflection, (std::array<AxialReflection, 3>{AxialReflection::opposite, AxialReflection::opposite,
+                                                                 AxialReflection::mirror}));
+  VariableRegistry vars;
+  AmrGrid grid(GridSetup{params, vars, MPI_COMM_SELF});
+  EXPECT_EQ(grid.domain().faces.axial_reflection, c.axial_reflection);
 }
 
 TEST(GridConfig, DescribeAndSpacing) {

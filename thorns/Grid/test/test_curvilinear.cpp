@@ -198,6 +198,42 @@ TEST(Parity, CartesianOctant3D) {
   expect_ghosts_match(c, f);
 }
 
+// Grid::axial_vector_reflection = opposite: axial fields that are minus their pseudo-vector mirror
+// image across the planes (a poloidal field about z across x = 0, y = 0; a toroidal field symmetric
+// in z across the equator, also through the spherical origin's image). Polar fields unchanged.
+TEST(Parity, CartesianOctantOppositeAxialParity3D) {
+  GridConfig c;
+  c.ncells = {16, 16, 16};
+  c.block_size = {8, 8, 8};
+  c.xmin = {0, 0, 0};
+  c.xmax = {1, 1, 1};
+  c.boundary_lower = {Boundary::reflect, Boundary::reflect, Boundary::reflect};
+  c.axial_reflection = {AxialReflection::opposite, AxialReflection::opposite, AxialReflection::mirror};
+  Fields f = axisymmetric_fields();  // its axial field is poloidal-like: (x z, y z, const)
+  f.vector = [](const Point3& X) { return Point3{X[0], 2 * X[1], 3 * X[2]}; };
+  expect_ghosts_match(c, f);
+}
+Fields toroidal_fields() {
+  Fields f = axisymmetric_fields();
+  f.axial = [](const Point3& X) {
+    const double g = 1 + X[2] * X[2] + 0.5 * (X[0] * X[0] + X[1] * X[1]);
+    return Point3{-X[1] * g, X[0] * g, 0.0};
+  };
+  return f;
+}
+TEST(Parity, CylindricalEquatorOppositeAxialParity2D) {
+  GridConfig c = cylindrical(2);
+  c.xmin[1] = 0;
+  c.boundary_lower[1] = Boundary::reflect;
+  c.axial_reflection[1] = AxialReflection::opposite;
+  expect_ghosts_match(c, toroidal_fields());
+}
+TEST(Parity, SphericalOriginAndEquatorOppositeAxialParity2D) {
+  GridConfig c = spherical(2, true);
+  c.axial_reflection[1] = AxialReflection::opposite;
+  expect_ghosts_match(c, toroidal_fields());
+}
+
 // Sum of the exact cell volumes against the domain volume.
 double total_volume(const GridConfig& c) {
   VariableRegistry vars;

@@ -54,21 +54,24 @@ REMNANT_REGISTER_THORN(HydroBase) {
   });
   // In the metric solver's groups (thorn.yaml): the sources of its equations, and the same recovery
   // sweep as the evolution's with the new psi (followed by the sources of the recovered matter).
-  reg.function("HydroBase_MatterSources", fill_matter_sources);
-  reg.function("HydroBase_InitialMatterSources", fill_matter_sources);
-  reg.function("HydroBase_ConservedFromPrimitives", [](remnant::Context& ctx) {
-    refresh_field(ctx);
-    conserved_from_primitives(ctx);
-    fill_matter_sources(ctx);
-  });
-  reg.function("HydroBase_RecoverInitialPrimitives", [](remnant::Context& ctx) {
-    refresh_field(ctx);
-    recover_all(ctx, "HydroBase_RecoverInitialPrimitives");
-    fill_matter_sources(ctx);
-  });
-  reg.function("HydroBase_RecoverWithNewMetric", [](remnant::Context& ctx) {
-    refresh_field(ctx);
-    recover_all(ctx, "HydroBase_RecoverWithNewMetric");
-    fill_matter_sources(ctx);
-  });
+  // Each also as *_MHD (thorn.yaml: the same work, declaring Bvec and the faces, with a field).
+  for (const std::string suffix : {"", "_MHD"}) {
+    reg.function("HydroBase_MatterSources" + suffix, fill_matter_sources);
+    reg.function("HydroBase_InitialMatterSources" + suffix, fill_matter_sources);
+    reg.function("HydroBase_ConservedFromPrimitives" + suffix, [](remnant::Context& ctx) {
+      refresh_field(ctx);
+      conserved_from_primitives(ctx);
+      fill_matter_sources(ctx);
+    });
+    reg.function("HydroBase_RecoverInitialPrimitives" + suffix, [](remnant::Context& ctx) {
+      refresh_field(ctx);
+      recover_all(ctx, "HydroBase_RecoverInitialPrimitives");
+      fill_matter_sources(ctx);
+    });
+    reg.function("HydroBase_RecoverWithNewMetric" + suffix, [](remnant::Context& ctx) {
+      refresh_field(ctx);
+      recover_all(ctx, "HydroBase_RecoverWithNewMetric");
+      fill_matter_sources(ctx);
+    });
+  }
 }

@@ -26,30 +26,38 @@ SourceLocation user_origin(const Parameters& p, std::initializer_list<std::pair<
 
 namespace {
 
-// The Grid's reflect boundaries keep B even (a pseudo-vector's mirror image). A poloidal star field
-// is odd under mirrors through planes that contain its axis (x = 0, y = 0), a toroidal one under
-// the equatorial mirror: such a boundary would evolve another field than the one seeded.
+// At a reflect plane B must continue as the seeded field does: a poloidal field about z is minus its
+// pseudo-vector mirror image across planes containing the axis (x = 0, y = 0) and its mirror image
+// across the equator; a toroidal field the other way round. Grid::axial_vector_reflection must say
+// so for every direction with a reflect face; a mixed field has no reflection symmetry at all.
 void check_symmetry(Context& ctx, const std::string& type, const std::string& coords, std::int64_t dim) {
   const Parameters& p = ctx.params();
   const auto& lower = ctx.param<std::vector<std::string>>("Grid", "boundary_lower");
   const auto& upper = ctx.param<std::vector<std::string>>("Grid", "boundary_upper");
-  const bool poloidal = type != "toroidal", toroidal = type != "poloidal";
-  if (poloidal && coords == "cartesian" && dim == 3 && (lower[0] == "reflect" || lower[1] == "reflect"))
-    throw InputError(user_origin(p, {{"Grid", "boundary_lower"}, {"SeedMagneticField", "type"}}),
-                     "SeedMagneticField::type = " + type + " with Grid::boundary_lower = [" + lower[0] + ", " + lower[1] +
-                         ", " + lower[2] + "]: a poloidal field is odd under the mirrors x = 0 and y = 0 (planes containing "
-                         "the star's axis) while reflect boundaries keep B even; allowed: reflect at z = 0 only (cover x and "
-                         "y on both sides of the axis)");
-  bool equator = false;
-  const char* which = "boundary_lower";
-  if (coords == "cartesian" && dim == 3) equator = lower[2] == "reflect";
-  if (coords == "cylindrical") equator = lower[1] == "reflect";
-  if (coords == "spherical") equator = upper[1] == "reflect", which = "boundary_upper";
-  if (toroidal && equator)
-    throw InputError(user_origin(p, {{"Grid", which}, {"SeedMagneticField", "type"}}),
-                     "SeedMagneticField::type = " + type + " with an equatorial reflect boundary (Grid::" + which +
-                         "): a toroidal field is odd under the equatorial mirror while reflect boundaries keep B even; "
-                         "allowed: the whole star across the equator (e.g. theta up to pi with an axis boundary)");
+  const std::vector<std::string> axial = p.find("Grid", "axial_vector_reflection")
+                                             ? ctx.param<std::vector<std::string>>("Grid", "axial_vector_reflection")
+                                             : std::vector<std::string>{"mirror", "mirror", "mirror"};
+  for (int d = 0; d < static_cast<int>(dim) && d < 3; ++d) {
+    const auto i = static_cast<std::size_t>(d);
+    if (lower[i] != "reflect" && upper[i] != "reflect") continue;
+    const bool equator = coords != "cartesian" || d == 2;  // curvilinear reflect planes are z = const
+    const std::string face = lower[i] == "reflect" ? "boundary_lower" : "boundary_upper";
+    const std::string plane = (equator ? "the equatorial plane" : (d == 0 ? "the plane x = 0" : "the plane y = 0")) +
+                              std::string(" (Grid::") + face + "[" + std::to_string(d) + "] = reflect)";
+    if (type == "poloidal_and_toroidal")
+      throw InputError(user_origin(p, {{"Grid", face.c_str()}, {"SeedMagneticField", "type"}}),
+                       "SeedMagneticField::type = poloidal_and_toroidal with a reflect boundary at " + plane +
+                           ": the poloidal and toroidal parts have opposite parities there, "
+                           "so no Grid::axial_vector_reflection fits; cover the whole star (no reflect boundary)");
+    const bool poloidal = type == "poloidal";
+    const std::string want = (poloidal != equator) ? "opposite" : "mirror";
+    if (axial[i] != want)
+      throw InputError(user_origin(p, {{"Grid", "axial_vector_reflection"}, {"SeedMagneticField", "type"}}),
+                       "SeedMagneticField::type = " + type + " with a reflect boundary at " + plane +
+                           " needs Grid::axial_vector_reflection[" + std::to_string(d) + "] = " + want + " (got " + axial[i] +
+                           "): a " + type + " field about z is " + (want == "opposite" ? "minus its" : "its") +
+                           " pseudo-vector mirror image there");
+  }
 }
 
 }  // namespace

@@ -44,9 +44,11 @@ Grid: {coordinates: cartesian, dimension: 3, ncells: [16, 16, 16], block_size: [
        boundary_upper: [outflow, outflow, outflow], max_level: 1, regions: [box], region_levels: [1],
        region_bounds: [0, 6, 0, 6, 0, 6]}
 )";
-// Grids without the symmetry planes a field type forbids (SeedMagneticField_CheckParameters).
-const std::vector<std::string> kCartesianHalf = {"Grid::xmin=[-12,-12,0]", "Grid::ncells=[32,32,16]", "Grid::region_bounds=[-6,6,-6,6,0,6]",
-                                                 "Grid::boundary_lower=[outflow,outflow,reflect]"};
+// The axial parities a field type needs at the grids' reflect planes (SeedMagneticField_CheckParameters),
+// and grids without reflect planes for the mixed field (no parity fits it).
+const std::vector<std::string> kCartesianPoloidal = {"Grid::axial_vector_reflection=[opposite,opposite,mirror]"};
+const std::vector<std::string> kCartesianToroidal = {"Grid::axial_vector_reflection=[mirror,mirror,opposite]"};
+const std::vector<std::string> kEquatorToroidal = {"Grid::axial_vector_reflection=[mirror,opposite,mirror]"};
 const std::vector<std::string> kCartesianFull = {"Grid::xmin=[-12,-12,-12]", "Grid::ncells=[32,32,32]", "Grid::region_bounds=[-6,6,-6,6,-6,6]",
                                                  "Grid::boundary_lower=[outflow,outflow,outflow]"};
 const std::vector<std::string> kCylindricalFull = {"Grid::xmin=[0,-16,0]", "Grid::ncells=[32,64,1]", "Grid::boundary_lower=[axis,outflow,outflow]"};
@@ -77,11 +79,12 @@ struct Grid {
   const std::string* text;
   const std::vector<std::string>* poloidal_ok;  // overrides that make the grid fit a poloidal field
   const std::vector<std::string>* toroidal_ok;  // ... and a toroidal one
+  const std::vector<std::string>* mixed_ok;     // ... and both (no reflect plane)
 };
 const std::vector<std::string> kNone;
-const Grid kGrids[] = {{"cylindrical 2D", &kCylindrical, &kNone, &kCylindricalFull},
-                       {"spherical 2D", &kSpherical, &kNone, &kSphericalFull},
-                       {"Cartesian 3D, 2 levels", &kCartesian, &kCartesianHalf, &kCartesianFull}};
+const Grid kGrids[] = {{"cylindrical 2D", &kCylindrical, &kNone, &kEquatorToroidal, &kCylindricalFull},
+                       {"spherical 2D", &kSpherical, &kNone, &kEquatorToroidal, &kSphericalFull},
+                       {"Cartesian 3D octant, 2 levels", &kCartesian, &kCartesianPoloidal, &kCartesianToroidal, &kCartesianFull}};
 
 std::vector<std::string> with(const std::vector<std::string>& a, std::vector<std::string> b) {
   b.insert(b.begin(), a.begin(), a.end());
@@ -108,7 +111,7 @@ TEST(SeededStar, ToroidalAndMixedFields) {
     // The paper's law gives several 1e17 G in BU0 with K_m = 3 (magnetized-DRNS: ~5e17 G).
     EXPECT_GT(t.B_max_gauss, 2e17) << g.name;
     EXPECT_LT(t.B_max_gauss, 2e18) << g.name;
-    const auto both = run_to_t0(*g.text, with(*g.toroidal_ok, {"SeedMagneticField::type=poloidal_and_toroidal", "SeedMagneticField::K_m=0.01"}));
+    const auto both = run_to_t0(*g.text, with(*g.mixed_ok, {"SeedMagneticField::type=poloidal_and_toroidal", "SeedMagneticField::K_m=0.01"}));
     EXPECT_LT(both.divB_max, 1e-14) << g.name;
     EXPECT_GT(both.E_mag_tor, 0.0) << g.name;
     EXPECT_GT(both.E_mag_pol, 0.0) << g.name;
@@ -140,10 +143,13 @@ TEST(SeededStar, BadInputStopsBeforeTheFirstStep) {
                      {"b^2/rho", "Atmosphere::sigma_max", "SeedMagneticField::K_m"});
   // Symmetry planes that would make the evolved field another one than the seeded.
   expect_input_error(kCylindrical, {"SeedMagneticField::type=toroidal", "Atmosphere::sigma_max=1e3"},
-                     {"toroidal field is odd under the equatorial mirror", "Grid::boundary_lower"});
-  expect_input_error(kSpherical, {"SeedMagneticField::type=poloidal_and_toroidal"}, {"Grid::boundary_upper", "odd"});
+                     {"needs Grid::axial_vector_reflection[1] = opposite (got mirror)", "equatorial plane"});
+  expect_input_error(kSpherical, {"SeedMagneticField::type=poloidal_and_toroidal"},
+                     {"Grid::boundary_upper", "no Grid::axial_vector_reflection fits"});
   expect_input_error(kCartesian, {"SeedMagneticField::type=poloidal"},
-                     {"Grid::boundary_lower = [reflect, reflect, reflect]", "x = 0 and y = 0"});
+                     {"needs Grid::axial_vector_reflection[0] = opposite (got mirror)", "the plane x = 0"});
+  expect_input_error(kCartesian, {"SeedMagneticField::type=poloidal", "Grid::axial_vector_reflection=[opposite,opposite,opposite]"},
+                     {"needs Grid::axial_vector_reflection[2] = mirror (got opposite)", "equatorial plane"});
   expect_input_error(kCylindrical, {"Grid::dimension=1", "Grid::ncells=[32,1,1]", "Grid::block_size=[16,1,1]"},
                      {"Grid::dimension = 1", "axis"});
 }

@@ -44,6 +44,9 @@ struct GridConfig {
   int ghost_zones = 3;
   std::array<Boundary, 3> boundary_lower{Boundary::outflow, Boundary::outflow, Boundary::outflow};
   std::array<Boundary, 3> boundary_upper{Boundary::outflow, Boundary::outflow, Boundary::outflow};
+  // Parity of axial vectors (B) at the reflect faces of each direction (remnant/domain.hpp);
+  // `opposite` only where that direction has a reflect face.
+  std::array<AxialReflection, 3> axial_reflection{AxialReflection::mirror, AxialReflection::mirror, AxialReflection::mirror};
 
   // Mesh refinement: finest level allowed (0: a uniform grid), static regions, and the Löhner
   // estimator on one component (empty: none).
