@@ -11,6 +11,7 @@
 #include "checkpoint_files.hpp"
 #include "checkpoint_header.hpp"
 #include "checksum.hpp"
+#include "file_seal.hpp"
 #include "h5.hpp"
 #include "parameter_record.hpp"
 #include "provenance.hpp"
@@ -106,6 +107,14 @@ std::string try_checkpoint(Context& ctx, const std::string& path, StepHistory* h
   std::unique_ptr<h5::Handle> file;
   std::string msg;
   const CheckpointExpectations expect = expectations_of(ctx);
+  // The seal first (rank 0 reads the file once), so that HDF5 never parses a damaged file.
+  if (!on_every_rank(
+          [&] {
+            const std::string bad = ctx.rank() == 0 ? check_file_seal(path) : std::string();
+            if (!bad.empty()) throw RunError(bad);
+          },
+          msg, ctx.comm()))
+    return msg;
   if (!on_every_rank(
           [&] {
             try {

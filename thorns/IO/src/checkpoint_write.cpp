@@ -12,6 +12,7 @@
 #include "checkpoint_files.hpp"
 #include "checkpoint_header.hpp"
 #include "checksum.hpp"
+#include "file_seal.hpp"
 #include "h5.hpp"
 #include "parameter_record.hpp"
 #include "provenance.hpp"
@@ -95,7 +96,7 @@ std::string write_checkpoint(Context& ctx, const CheckpointSettings& settings, c
 
   std::int64_t nans = 0;
   {
-    h5::Handle file = h5::create_file(tmp, comm);
+    h5::Handle file = h5::create_file(tmp, comm, kFileSealBytes);
     h5::write_attr(file, "format", header.format);  // first: a dead writer's file still says what it is
     write_provenance(file, prov, writer);
     h5::write_string(file, "parameters", header.parameters, writer);
@@ -170,6 +171,7 @@ std::string write_checkpoint(Context& ctx, const CheckpointSettings& settings, c
   MPI_Barrier(comm);
   std::vector<std::string> pruned;
   if (writer) {
+    seal_file(tmp);  // before the rename: a file under its final name is always sealed
     commit_file(tmp, path);
     pruned = prune_checkpoints(settings.dir, settings.keep, ctx.iteration());
   }

@@ -91,12 +91,14 @@ QuietErrors::QuietErrors() {
 }
 QuietErrors::~QuietErrors() { H5Eset_auto2(H5E_DEFAULT, func_, data_); }
 
-Handle create_file(const std::string& path, MPI_Comm comm) {
+Handle create_file(const std::string& path, MPI_Comm comm, unsigned long long user_block) {
   Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
   checked_status(H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL), "MPI-IO driver for " + path);
   // Metadata written collectively: one writer instead of every rank touching small objects.
   H5Pset_coll_metadata_write(fapl, true);
-  return Handle(checked(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), "create " + path), H5Fclose);
+  Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+  if (user_block) checked_status(H5Pset_userblock(fcpl, user_block), "user block of " + path);
+  return Handle(checked(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl, fapl), "create " + path), H5Fclose);
 }
 
 Handle create_file_serial(const std::string& path) {

@@ -57,7 +57,8 @@ class QuietErrors {
 };
 
 // Files. `comm` given: MPI-IO driver (collective); otherwise the POSIX driver of this process.
-Handle create_file(const std::string& path, MPI_Comm comm);
+// user_block: bytes reserved at the start of the file that HDF5 never touches (0 or a power of 2 >= 512).
+Handle create_file(const std::string& path, MPI_Comm comm, unsigned long long user_block = 0);
 Handle create_file_serial(const std::string& path);
 Handle open_file_serial(const std::string& path);
 

@@ -23,6 +23,7 @@
 #include "checkpoint.hpp"
 #include "checkpoint_files.hpp"
 #include "checkpoint_header.hpp"
+#include "file_seal.hpp"
 #include "remnant/driver.hpp"
 
 std::span<const remnant::ThornEntry> remnant_compiled_thorns();
@@ -134,11 +135,35 @@ TEST(CheckpointRecovery, MeshTheGridRefusesFallsBackToThePreviousCheckpoint) {
     ASSERT_GE(H5Awrite(a, H5T_NATIVE_INT64, &sum), 0);
     H5Aclose(a);
     H5Fclose(f);
+    seal_file(newest);  // the faulty writer seals what it wrote
   }
   const Recovery r = recover_from(dir, root);
   EXPECT_EQ(r.used, checkpoint_path(dir.string(), 4)) << r.error << r.log;
   EXPECT_NE(r.log.find("checkpoint.it0000000008.h5 is unusable: the checkpoint's mesh has a block"), std::string::npos)
       << r.log;
+  fs::remove_all(root);
+}
+
+// HDF5 can crash (not fail) on a damaged object header, so recovery checks the file's seal (a
+// checksum of everything after the user block) before HDF5 parses anything.
+TEST(CheckpointRecovery, DamagedBytesAreRejectedByTheFileSealBeforeHdf5ReadsThem) {
+  const fs::path root = fs::temp_directory_path() / ("remnant_seal_" + std::to_string(::getpid()));
+  const fs::path dir = write_checkpoints(root);
+  const std::string newest = checkpoint_path(dir.string(), 8);
+  const std::string original = bytes_of(newest);
+  ASSERT_EQ(original.rfind("remnant-file-seal fnv64 ", 0), 0u) << "the checkpoint starts with its seal";
+  for (std::size_t offset : {std::size_t{kFileSealBytes} + 8, std::size_t{kFileSealBytes} + 700, original.size() - 3}) {
+    std::string damaged = original;
+    damaged[offset] = static_cast<char>(damaged[offset] ^ 0x10);
+    std::ofstream(newest, std::ios::binary | std::ios::trunc) << damaged;
+    const Recovery r = recover_from(dir, root);
+    EXPECT_EQ(r.used, checkpoint_path(dir.string(), 4)) << "byte " << offset << ": " << r.error << r.log;
+    EXPECT_NE(r.log.find("checkpoint.it0000000008.h5 is unusable: its contents do not match the file seal"), std::string::npos)
+        << "byte " << offset << ": " << r.log;
+  }
+  std::ofstream(newest, std::ios::binary | std::ios::trunc) << original.substr(0, original.size() - 100);
+  const Recovery r = recover_from(dir, root);
+  EXPECT_NE(r.log.find("(truncated or extended)"), std::string::npos) << r.log;
   fs::remove_all(root);
 }
 
