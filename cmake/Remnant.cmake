@@ -258,7 +258,13 @@ function(remnant_add_regression_tests)
     file(RELATIVE_PATH rel ${CMAKE_SOURCE_DIR} ${dir})
     string(REGEX MATCH "^testsuites/([^/]+)/" _ ${rel})
     set(thorn ${CMAKE_MATCH_1})
-    foreach(np 1 2)
+    # The rank counts of the suite's `nprocs:` (1 and 2 when it has none).
+    set(nps 1 2)
+    file(STRINGS ${dir}/test.yaml nprocs_line REGEX "^nprocs:")
+    if(nprocs_line)
+      string(REGEX MATCHALL "[0-9]+" nps "${nprocs_line}")
+    endif()
+    foreach(np ${nps})
       add_test(NAME regression:${rel}:np${np}
                COMMAND ${REMNANT_PYTHON} ${CMAKE_SOURCE_DIR}/utils/run_testsuites
                        --build-dir ${CMAKE_BINARY_DIR} --np ${np} ${dir})
