@@ -327,4 +327,17 @@ std::string Parameters::to_yaml(const std::vector<std::string>& thorns) const {
   return out;
 }
 
+const SourceLocation& Parameters::user_origin(std::initializer_list<std::pair<const char*, const char*>> names) const {
+  for (const bool command_line : {true, false})
+    for (const auto& [thorn, name] : names) {
+      if (!find(thorn, name)) continue;
+      const SourceLocation& where = origin(thorn, name);
+      const bool is_default =
+          where.file.find("thorn.yaml") != std::string::npos || where.file.find("flesh.yaml") != std::string::npos;
+      if (!is_default && (!command_line || where.file.rfind("command line", 0) == 0)) return where;
+    }
+  const auto& [thorn, name] = *names.begin();
+  return origin(thorn, name);
+}
+
 }  // namespace remnant

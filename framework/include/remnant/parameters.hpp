@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <map>
 #include <optional>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -63,6 +64,9 @@ class Parameters {
   const ParamValue& value(std::string_view thorn, std::string_view name) const;
   // Where the current value came from (the parfile location, or the thorn.yaml default).
   const SourceLocation& origin(std::string_view thorn, std::string_view name) const;
+  // Where the user set the first of these parameters (the command line first, then the parfile):
+  // the location an error about their combination should name. Falls back to the first one's origin.
+  const SourceLocation& user_origin(std::initializer_list<std::pair<const char*, const char*>> names) const;
 
   // Typed access; T is std::int64_t, double, bool, std::string or a std::vector of them
   // (keywords are std::string). The reference stays valid for the life of the Parameters.

@@ -11,19 +11,6 @@ std::string format_number(double x) {
   return buf;
 }
 
-SourceLocation user_origin(const Parameters& p, std::initializer_list<std::pair<const char*, const char*>> names) {
-  for (const bool command_line : {true, false})
-    for (const auto& [thorn, name] : names) {
-      if (!p.find(thorn, name)) continue;
-      const SourceLocation& where = p.origin(thorn, name);
-      const bool is_default =
-          where.file.find("thorn.yaml") != std::string::npos || where.file.find("flesh.yaml") != std::string::npos;
-      if (!is_default && (!command_line || where.file.rfind("command line", 0) == 0)) return where;
-    }
-  const auto& [thorn, name] = *names.begin();
-  return p.origin(thorn, name);
-}
-
 namespace {
 
 // At a reflect plane B must continue as the seeded field does: a poloidal field about z is minus its
@@ -45,14 +32,14 @@ void check_symmetry(Context& ctx, const std::string& type, const std::string& co
     const std::string plane = (equator ? "the equatorial plane" : (d == 0 ? "the plane x = 0" : "the plane y = 0")) +
                               std::string(" (Grid::") + face + "[" + std::to_string(d) + "] = reflect)";
     if (type == "poloidal_and_toroidal")
-      throw InputError(user_origin(p, {{"Grid", face.c_str()}, {"SeedMagneticField", "type"}}),
+      throw InputError(p.user_origin({{"Grid", face.c_str()}, {"SeedMagneticField", "type"}}),
                        "SeedMagneticField::type = poloidal_and_toroidal with a reflect boundary at " + plane +
                            ": the poloidal and toroidal parts have opposite parities there, "
                            "so no Grid::axial_vector_reflection fits; cover the whole star (no reflect boundary)");
     const bool poloidal = type == "poloidal";
     const std::string want = (poloidal != equator) ? "opposite" : "mirror";
     if (axial[i] != want)
-      throw InputError(user_origin(p, {{"Grid", "axial_vector_reflection"}, {"SeedMagneticField", "type"}}),
+      throw InputError(p.user_origin({{"Grid", "axial_vector_reflection"}, {"SeedMagneticField", "type"}}),
                        "SeedMagneticField::type = " + type + " with a reflect boundary at " + plane +
                            " needs Grid::axial_vector_reflection[" + std::to_string(d) + "] = " + want + " (got " + axial[i] +
                            "): a " + type + " field about z is " + (want == "opposite" ? "minus its" : "its") +
@@ -66,7 +53,7 @@ void check_parameters(Context& ctx) {
   const Parameters& p = ctx.params();
   const std::string mode = p.find("HydroBase", "magnetic_field") ? ctx.param<std::string>("HydroBase", "magnetic_field") : "none";
   if (mode != "evolved")
-    throw InputError(user_origin(p, {{"HydroBase", "magnetic_field"}, {"SeedMagneticField", "type"}}),
+    throw InputError(p.user_origin({{"HydroBase", "magnetic_field"}, {"SeedMagneticField", "type"}}),
                      "SeedMagneticField is active but HydroBase::magnetic_field = " + mode +
                          ": the run has no magnetic field to seed; set HydroBase::magnetic_field: evolved or remove "
                          "SeedMagneticField from active_thorns");
@@ -74,7 +61,7 @@ void check_parameters(Context& ctx) {
   const bool poloidal = type != "toroidal";
   const double fraction = ctx.param<double>("SeedMagneticField", "p_cut_fraction");
   if (poloidal && !(fraction < 1.0))
-    throw InputError(user_origin(p, {{"SeedMagneticField", "p_cut_fraction"}}),
+    throw InputError(p.user_origin({{"SeedMagneticField", "p_cut_fraction"}}),
                      "SeedMagneticField::p_cut_fraction = " + format_number(fraction) +
                          " puts p_cut at or above the maximum pressure p_max, so the poloidal potential "
                          "A_phi = A_b varpi^2 max(p - p_cut, 0)^n_s vanishes everywhere; allowed: [0, 1)");
@@ -84,7 +71,7 @@ void check_parameters(Context& ctx) {
     check_symmetry(ctx, type, coords, dim);
     const bool axisymmetric_2d = dim == 2 && coords != "cartesian";
     if (dim != 3 && !axisymmetric_2d)
-      throw InputError(user_origin(p, {{"Grid", "dimension"}, {"Grid", "coordinates"}, {"SeedMagneticField", "type"}}),
+      throw InputError(p.user_origin({{"Grid", "dimension"}, {"Grid", "coordinates"}, {"SeedMagneticField", "type"}}),
                        "SeedMagneticField needs the star's axis on the grid: Grid::dimension = " + std::to_string(dim) +
                            " with Grid::coordinates = " + coords +
                            " has none; allowed: dimension 2 with cylindrical or spherical coordinates, or dimension 3");

@@ -14,7 +14,4 @@ inline constexpr const char* kMagnetisationCapThorn = "Atmosphere";
 inline constexpr const char* kMagnetisationCapName = "sigma_max";
 
 std::string format_number(double x);
-// The parfile location of the first of these parameters that the user set (command line first),
-// else the declaration of the first one.
-SourceLocation user_origin(const Parameters& p, std::initializer_list<std::pair<const char*, const char*>> names);
 }  // namespace remnant::seed

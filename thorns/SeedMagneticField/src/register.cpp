@@ -110,7 +110,7 @@ void initial(Context& ctx) {
     for (Block* b : grid.local_blocks()) set_poloidal_faces(*b, pol, star_fields(ctx, *b).press, groups.faces(*b), quadrature);
     const double unit_max = max_field_strength(ctx, groups);
     if (!(unit_max > 0.0))
-      throw InputError(user_origin(ctx.params(), {{"SeedMagneticField", "p_cut_fraction"}}),
+      throw InputError(ctx.params().user_origin({{"SeedMagneticField", "p_cut_fraction"}}),
                        "SeedMagneticField: the poloidal potential vanishes on the whole grid (no cell has p > p_cut = " +
                            format_number(pol.p_cut) + " = SeedMagneticField::p_cut_fraction * p_max, p_max = " +
                            format_number(p_max) + "); lower p_cut_fraction or resolve the star");
@@ -169,7 +169,7 @@ void initial(Context& ctx) {
   if (p.find(kMagnetisationCapThorn, kMagnetisationCapName)) {
     const double cap = ctx.param<double>(kMagnetisationCapThorn, kMagnetisationCapName);
     if (sigma > cap)
-      throw InputError(user_origin(p, {{"SeedMagneticField", poloidal ? "B_max_gauss" : "K_m"},
+      throw InputError(p.user_origin({{"SeedMagneticField", poloidal ? "B_max_gauss" : "K_m"},
                                        {kMagnetisationCapThorn, kMagnetisationCapName}}),
                        std::string("SeedMagneticField: the seeded field reaches b^2/rho = ") + format_number(sigma) +
                            " in the star, above the atmosphere's cap " + kMagnetisationCapThorn + "::" + kMagnetisationCapName +

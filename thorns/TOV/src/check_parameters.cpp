@@ -23,21 +23,6 @@ std::string num(double x) {
   return buf;
 }
 
-// Defaults come from a thorn.yaml; blame the first parameter set on the command line, else the
-// first set in a parfile.
-SourceLocation user_origin(const Parameters& p, std::initializer_list<std::pair<const char*, const char*>> names) {
-  for (const bool command_line : {true, false})
-    for (const auto& [thorn, name] : names) {
-      if (!p.find(thorn, name)) continue;
-      const SourceLocation& where = p.origin(thorn, name);
-      const bool is_default =
-          where.file.find("thorn.yaml") != std::string::npos || where.file.find("flesh.yaml") != std::string::npos;
-      if (!is_default && (!command_line || where.file.rfind("command line", 0) == 0)) return where;
-    }
-  const auto& [thorn, name] = *names.begin();
-  return p.origin(thorn, name);
-}
-
 // Radius of the largest sphere about the origin inside the grid (a lower bound of 0 is a symmetry
 // plane, the origin or an axis: the domain continues across it). Infinity without Grid parameters.
 double grid_reach(const Parameters& p) {
@@ -68,7 +53,7 @@ void check_parameters(Context& ctx) {
   if (p.find("Atmosphere", "rho_thr")) {
     const double rho_thr = ctx.param<double>("Atmosphere", "rho_thr");
     if (!(rho_c > rho_thr))
-      throw InputError(user_origin(p, {{"Atmosphere", "rho_thr"}, {"TOV", "rho_central"}}),
+      throw InputError(p.user_origin({{"Atmosphere", "rho_thr"}, {"TOV", "rho_central"}}),
                        "Atmosphere::rho_thr = " + num(rho_thr) + " is not below TOV::rho_central = " + num(rho_c) +
                            ": the whole star would be atmosphere (M = 0); allowed: rho_thr < rho_central");
   }
@@ -77,17 +62,17 @@ void check_parameters(Context& ctx) {
   try {
     star = std::make_unique<TovStar>(*slice, rho_c, static_cast<int>(ctx.param<std::int64_t>("TOV", "samples")));
   } catch (const std::exception& e) {
-    throw InputError(user_origin(p, {{"TOV", "rho_central"}, {"TOV", "poly_K"}, {"TOV", "poly_gamma"}}),
+    throw InputError(p.user_origin({{"TOV", "rho_central"}, {"TOV", "poly_K"}, {"TOV", "poly_gamma"}}),
                      std::string("no TOV star for these parameters: ") + e.what());
   }
   const double R = star->isotropic_radius(), M = star->gravitational_mass();
   if (!std::isfinite(R) || !std::isfinite(M) || !(M > 0))
-    throw InputError(user_origin(p, {{"TOV", "rho_central"}, {"TOV", "poly_K"}, {"TOV", "poly_gamma"}}),
+    throw InputError(p.user_origin({{"TOV", "rho_central"}, {"TOV", "poly_K"}, {"TOV", "poly_gamma"}}),
                      "the TOV star has mass M = " + num(M) + " and radius R = " + num(R) +
                          ": check TOV::rho_central, TOV::poly_K, TOV::poly_gamma");
   const double reach = grid_reach(p);
   if (R >= reach)
-    throw InputError(user_origin(p, {{"TOV", "poly_K"}, {"TOV", "rho_central"}, {"TOV", "poly_gamma"}, {"Grid", "xmax"}}),
+    throw InputError(p.user_origin({{"TOV", "poly_K"}, {"TOV", "rho_central"}, {"TOV", "poly_gamma"}, {"Grid", "xmax"}}),
                      "the star (isotropic radius R = " + num(R) + ", M = " + num(M) +
                          ") is larger than the grid, which reaches r = " + num(reach) +
                          " (Grid::xmin, Grid::xmax): enlarge the grid or change TOV::rho_central, TOV::poly_K, "
