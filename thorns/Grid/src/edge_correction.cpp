@@ -38,8 +38,27 @@ EdgeCorrection::EdgeCorrection(const Forest& forest, const BoundaryMaps& maps, s
     plan_same_level(forest, maps, gid);
     plan_finer(forest, maps, gid);
   }
+  check_sources(same_, forest.block_cells());
+  check_sources(fine_, forest.block_cells());
   sort_out(same_, forest);
   sort_out(fine_, forest);
+}
+
+// Every value read must be an edge of the source block's interior (block faces included): a plan
+// that reaches outside would read another allocation's memory, whose content changes from run to
+// run (the heap layout differs, most under MPI).
+void EdgeCorrection::check_sources(const Pass& pass, const std::array<int, 3>& n) const {
+  for (const Transfer& t : pass.all)
+    for (const auto& p : t.points)
+      for (int e = 0; e < dimension_; ++e) {
+        const auto ue = static_cast<std::size_t>(e);
+        const int q = (pass.fine ? 2 * p[ue] : p[ue]) + t.shift[ue];
+        const int last = n[ue] + stagger_[ue] - 1 - (pass.fine && !stagger_[ue] ? 1 : 0);
+        if (q < 0 || q > last)
+          throw RunError("Grid: internal error: correct_edges would read edge " + std::to_string(q) + " in direction " +
+                         std::to_string(e) + " of block " + std::to_string(t.src_gid) + " (valid 0.." +
+                         std::to_string(last) + ") for block " + std::to_string(t.dst_gid));
+      }
 }
 
 void EdgeCorrection::plan_same_level(const Forest& forest, const BoundaryMaps& maps, std::int64_t gid) {
@@ -73,9 +92,12 @@ void EdgeCorrection::plan_same_level(const Forest& forest, const BoundaryMaps& m
         }
   }
   if (!involved || best.empty()) return;
-  std::map<std::int64_t, Transfer> by_source;
+  // One transfer per source and shift: across a periodic direction with two blocks the same
+  // neighbour lies beyond both faces, each with its own shift (one shared shift made the points
+  // of one face read outside the source block).
+  std::map<std::pair<std::int64_t, std::array<int, 3>>, Transfer> by_source;
   for (const auto& [p, src] : best) {
-    Transfer& t = by_source[src.first];
+    Transfer& t = by_source[src];
     t.src_gid = src.first;
     t.dst_gid = gid;
     t.shift = src.second;

@@ -48,6 +48,7 @@ class EdgeCorrection {
   };
   void plan_same_level(const Forest& forest, const BoundaryMaps& maps, std::int64_t gid);
   void plan_finer(const Forest& forest, const BoundaryMaps& maps, std::int64_t gid);
+  void check_sources(const Pass& pass, const std::array<int, 3>& n) const;
   void sort_out(Pass& pass, const Forest& forest);
   void source_values(const Pass& pass, const Transfer& t, const Field& f, double* out) const;
   void run_pass(Pass& pass, const VariableRegistry& vars, std::span<const int> groups);

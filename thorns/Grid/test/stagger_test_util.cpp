@@ -258,6 +258,55 @@ void fill_emf(AmrGrid& grid, const EdgeSetup& s) {
     }
 }
 
+namespace {
+
+// Calls fn(a, E, i, j, k, global) for every interior edge of group a of block b; `global` is the
+// edge's index on its level, wrapped across periodic directions.
+template <class Fn>
+void for_each_edge(AmrGrid& grid, const EdgeSetup& s, Block& b, Fn&& fn) {
+  const GridConfig& c = grid.config();
+  for (int a = 0; a < 3; ++a) {
+    const Field E = b.field(s.edge[a], 0);
+    const auto st = staggering(static_cast<Centering>(static_cast<int>(Centering::edge_x) + a));
+    int top[3];
+    for (int e = 0; e < 3; ++e) top[e] = b.n[static_cast<std::size_t>(e)] + (e < c.dimension ? st[static_cast<std::size_t>(e)] : 0);
+    for (int k = 0; k < top[2]; ++k)
+      for (int j = 0; j < top[1]; ++j)
+        for (int i = 0; i < top[0]; ++i) {
+          const int p[3] = {i, j, k};
+          std::array<std::int64_t, 3> g{};
+          for (std::size_t e = 0; e < 3; ++e) {
+            g[e] = b.index[e] * b.n[e] + p[e];
+            const std::int64_t cells = static_cast<std::int64_t>(c.ncells[e]) << b.level;
+            if (static_cast<int>(e) < c.dimension && c.boundary_lower[e] == Boundary::periodic) g[e] %= cells;
+          }
+          fn(a, E, i, j, k, g);
+        }
+  }
+}
+
+}  // namespace
+
+void fill_distinct_edges(AmrGrid& grid, const EdgeSetup& s) {
+  for (Block* b : grid.local_blocks())
+    for_each_edge(grid, s, *b, [&](int a, const Field& E, int i, int j, int k, const std::array<std::int64_t, 3>& g) {
+      E(i, j, k) = (1 + a + 0.1 * b->level + 0.01 * static_cast<double>(g[0]) + 1e-4 * static_cast<double>(g[1]) +
+                    1e-6 * static_cast<double>(g[2])) *
+                   (1 + 1e-3 * static_cast<double>(b->gid));
+    });
+}
+
+double edge_copy_mismatch(AmrGrid& grid, const EdgeSetup& s) {
+  std::map<std::tuple<int, int, std::int64_t, std::int64_t, std::int64_t>, double> first;
+  double worst = 0;
+  for (Block* b : grid.local_blocks())
+    for_each_edge(grid, s, *b, [&](int a, const Field& E, int i, int j, int k, const std::array<std::int64_t, 3>& g) {
+      const auto [it, fresh] = first.try_emplace({a, b->level, g[0], g[1], g[2]}, E(i, j, k));
+      if (!fresh) worst = std::max(worst, std::abs(E(i, j, k) - it->second));
+    });
+  return worst;
+}
+
 void ct_update(AmrGrid& grid, const EdgeSetup& s, double dt) {
   const int dim = grid.dimension();
   for (Block* b : grid.local_blocks()) {

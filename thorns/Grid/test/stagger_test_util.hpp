@@ -49,6 +49,12 @@ struct EdgeSetup {
 // levels and, by a factor 1 + 1e-3 gid, between blocks (as ghosts near refinement boundaries make
 // them), zero on edges of zero length and single-valued along an axis; in 2D only along z.
 void fill_emf(AmrGrid& grid, const EdgeSetup& s);
+// Sets every interior edge (block faces included) of every group, in 2D too, to a nonzero value
+// that depends on the edge's level and wrapped global position and, by 1 + 1e-3 gid, on the block.
+void fill_distinct_edges(AmrGrid& grid, const EdgeSetup& s);
+// The largest difference between two copies of one edge among the local blocks of one level,
+// across periodic faces too (the copies correct_edges must make equal).
+double edge_copy_mismatch(AmrGrid& grid, const EdgeSetup& s);
 // Phi -= dt * (circulation of E around the face), line integrals = value * coordinate length.
 void ct_update(AmrGrid& grid, const EdgeSetup& s, double dt);
 

@@ -206,5 +206,34 @@ TEST(GridMpi, StaggeredRegridAndEdgeCorrectionGiveTheSameBitsAsOneRank) {
   }
 }
 
+// 2D, periodic, two level-0 blocks along y (the same neighbour beyond both y faces, as in the
+// field loop): correct_edges on two ranks gives every edge the bits of one rank, where every copy
+// of an edge has one value (E_x and E_y included, which the 2D CT update of B^3 reads).
+TEST(GridMpi, EdgeCorrectionAcrossBothPeriodicFacesOfOneNeighbour) {
+  EdgeSetup s;
+  GridConfig c = stagger_config(CoordinateSystem::cartesian, 2);
+  c.ncells = {32, 16, 1};
+  c.max_level = 1;
+  c.boundary_lower = c.boundary_upper = {Boundary::periodic, Boundary::periodic, Boundary::outflow};
+  c.regions = {{RegionKind::box, RegionMode::at_least, 1, {-0.1, 0.1, -0.1, 0.1, -1, 1}}};
+  AmrGrid shared(c, s.f.vars, MPI_COMM_WORLD);
+  AmrGrid alone(c, s.f.vars, MPI_COMM_SELF);
+  ASSERT_EQ(shared.finest_level(), 1);
+  const std::vector<int> edges = {s.edge[0], s.edge[1], s.edge[2]};
+  for (AmrGrid* g : {&shared, &alone}) {
+    fill_distinct_edges(*g, s);
+    g->correct_edges(edges);
+  }
+  EXPECT_EQ(edge_copy_mismatch(alone, s), 0.0);
+  std::int64_t differ = 0;
+  for (Block* b : shared.local_blocks()) {
+    Block* a = alone.local_blocks()[static_cast<std::size_t>(b->gid)];
+    for (int g : edges)
+      for (std::size_t p = 0; p < b->size(g); ++p)
+        if (std::memcmp(&b->data(g)[p], &a->data(g)[p], sizeof(double)) != 0) ++differ;
+  }
+  EXPECT_EQ(global_sum(differ), 0);
+}
+
 }  // namespace
 }  // namespace remnant::grid::test
