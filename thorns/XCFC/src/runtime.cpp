@@ -1,5 +1,6 @@
 #include "runtime.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -58,8 +59,10 @@ XcfcSolver& solver(Context& ctx) {
 
 std::string save_persistent(const Runtime& rt) {
   char text[200];
-  std::snprintf(text, sizeof text, "%lld %lld %a %a %d %a", static_cast<long long>(rt.steps_since_solve),
-                static_cast<long long>(rt.solves), rt.t_last, rt.t_before, rt.history, rt.t_earlier);
+  std::snprintf(text, sizeof text, "%lld %lld %a %a %d %a %lld %lld %a %a %d", static_cast<long long>(rt.steps_since_solve),
+                static_cast<long long>(rt.solves), rt.t_last, rt.t_before, rt.history, rt.t_earlier,
+                static_cast<long long>(rt.updates), static_cast<long long>(rt.update_cycles), rt.t_solve_last,
+                rt.t_solve_before, rt.solve_history);
   return text;
 }
 
@@ -73,6 +76,16 @@ void restore_persistent(Runtime& rt, const std::string& text) {
   rt.t_last = std::strtod(t_last.c_str(), nullptr);
   rt.t_before = std::strtod(t_before.c_str(), nullptr);
   rt.t_earlier = std::strtod(t_earlier.c_str(), nullptr);
+  // The updates between solves (XCFC::update_every) came later: a checkpoint without their fields
+  // has none, and its last solves are those of the history.
+  std::string t_solve_last, t_solve_before;
+  if (s >> rt.updates >> rt.update_cycles >> t_solve_last >> t_solve_before >> rt.solve_history) {
+    rt.t_solve_last = std::strtod(t_solve_last.c_str(), nullptr);
+    rt.t_solve_before = std::strtod(t_solve_before.c_str(), nullptr);
+    return;
+  }
+  rt.updates = rt.update_cycles = 0;
+  rt.t_solve_last = rt.t_last, rt.t_solve_before = rt.t_before, rt.solve_history = std::min(rt.history, 2);
 }
 
 }  // namespace remnant::xcfc

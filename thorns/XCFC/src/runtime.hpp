@@ -16,8 +16,9 @@ namespace remnant::xcfc {
 struct SolveInProgress;
 
 // What the scheduled steps of XCFC_Solve do in the current pass (cadence.hpp): nothing more
-// (idle), a solve, the metric extrapolated in time, or the residual trigger's test.
-enum class Stage { idle, solve, extrapolate, check_trigger };
+// (idle), a solve, the metric extrapolated in time, the update of psi and alpha psi with the current
+// matter between solves (XCFC::update_cycles), or the residual trigger's test.
+enum class Stage { idle, solve, extrapolate, update, check_trigger };
 
 struct Runtime {
   Stage stage = Stage::idle;
@@ -38,6 +39,13 @@ struct Runtime {
   // Times of the last three solves and how many of XCFC::metric_history's three slots are filled.
   double t_last = 0, t_before = 0, t_earlier = 0;
   int history = 0;
+  // Steps since the last solve whose psi and alpha psi were updated (XCFC::update_cycles), and the
+  // V-cycles they took: logged with the next solve in xcfc.tsv.
+  std::int64_t updates = 0, update_cycles = 0;
+  // Times of the last two full solves and how many are recorded: X^i's potentials are extrapolated
+  // from these (updates keep X^i); without updates they equal t_last, t_before.
+  double t_solve_last = 0, t_solve_before = 0;
+  int solve_history = 0;
   bool tsv_started = false;  // xcfc.tsv created (fresh run) or trimmed (recovered run) by this process
   bool warned_theta = false;
 };
