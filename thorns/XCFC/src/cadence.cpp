@@ -44,7 +44,8 @@ std::optional<double> solve_extrapolation_weight(Context& ctx) {
   return (ctx.time() - rt.t_solve_last) / (rt.t_solve_last - rt.t_solve_before);
 }
 
-void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st) {
+void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st,
+                     bool with_X) {
   const std::optional<double> weight = extrapolation_weight(ctx), x_weight = solve_extrapolation_weight(ctx);
   const bool extrapolate = weight && *weight > 0, extrapolate_X = x_weight && *x_weight > 0;
   const double w = extrapolate ? *weight : 0.0, wx = extrapolate_X ? *x_weight : 0.0;
@@ -79,10 +80,10 @@ void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& 
     });
   };
   for (int a = 0; a < 3; ++a) {
-    st.X_potentials.B[a] = X_potential(Potentials::idx::XB + a);
+    if (with_X) st.X_potentials.B[a] = X_potential(Potentials::idx::XB + a);
     st.beta_potentials.B[a] = potential(Potentials::idx::betaB + a);
   }
-  st.X_potentials.chi = X_potential(Potentials::idx::Xchi);
+  if (with_X) st.X_potentials.chi = X_potential(Potentials::idx::Xchi);
   st.beta_potentials.chi = potential(Potentials::idx::betachi);
 }
 

@@ -27,7 +27,9 @@ std::optional<double> extrapolation_weight(Context& ctx);
 // change between solves is then left to second order, which saves V-cycles. With updates between
 // solves (XCFC::update_every) psi, alpha psi and beta's potentials come from the latest two metrics,
 // solved or updated, and X's potentials from the last two solves (their own times).
-void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st);
+// with_X = false (an update): X's potentials are left out (update_between_solves.hpp gives A^ij).
+void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st,
+                     bool with_X = true);
 
 // The weight of X's potentials: (t - t_solve_last) / (t_solve_last - t_solve_before), or none
 // before two solves.

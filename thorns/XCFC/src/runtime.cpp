@@ -50,6 +50,7 @@ XcfcSolver& solver(Context& ctx) {
                "(refine all theta near the origin, e.g. with a Grid::regions sphere; thorns/XCFC/README.md)"),
           rt.warned_theta = true;
     rt.layout = lay;
+    rt.update_A = {};  // of the old mesh
     // The base level's cycles are split between the ranks; patches are computed by every rank.
     rt.solver = lay.patches.empty() ? std::make_unique<XcfcSolver>(lay.base, ctx.grid().comm())
                                     : std::make_unique<XcfcSolver>(lay, ctx.grid().comm());

@@ -3,6 +3,7 @@
 // several simulations in one process, e.g. tests, do not share it). Everything a bit-identical
 // continuation needs is either on the grid (Spacetime::metric, XCFC::potentials: the warm starts;
 // XCFC::metric_history) or in the persistent counters saved with the checkpoint.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -46,6 +47,14 @@ struct Runtime {
   // from these (updates keep X^i); without updates they equal t_last, t_before.
   double t_solve_last = 0, t_solve_before = 0;
   int solve_history = 0;
+  // A^ij of the last two solves' X potentials, computed at the first update after a solve (for
+  // solve count `solves`; rebuilt with the solver). Not checkpointed: recomputed from the same
+  // potentials after a restart, so the updates stay bit-identical.
+  struct UpdateA {
+    std::int64_t solves = -1;
+    bool two = false;  // A_before holds the solve before the last
+    std::array<CompositeField, 6> last, before;
+  } update_A;
   bool tsv_started = false;  // xcfc.tsv created (fresh run) or trimmed (recovered run) by this process
   bool warned_theta = false;
 };

@@ -14,6 +14,7 @@
 #include "remnant/vars/XCFC.hpp"
 #include "runtime.hpp"
 #include "solve_log.hpp"
+#include "update_between_solves.hpp"
 
 namespace remnant::xcfc {
 namespace {
@@ -75,7 +76,7 @@ struct SolveInProgress {
   SolveInProgress(Context& ctx, bool initial, bool update_only = false)
       : sv(solver(ctx)), br(ctx, sv.multigrid()), g(SpacetimeGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
         set(settings(ctx, initial)), update(update_only) {
-    load_warm_start(ctx, br, g, potentials, st);
+    load_warm_start(ctx, br, g, potentials, st, !update_only);
   }
 };
 
@@ -114,12 +115,12 @@ void shift_and_finish(Context& ctx, SolveInProgress& s) {
 void step_vector_potential(Context& ctx) {
   Runtime& rt = runtime(ctx);
   if (rt.stage == Stage::update) {
-    // Between solves: X^i (hence A^ij) from the potentials of the last two solves extrapolated in
-    // time, no V-cycle; psi, alpha psi and beta^i follow in the steps below.
+    // Between solves: A^ij extrapolated from the last two solves' X^i, no V-cycle; psi, alpha psi
+    // and beta^i follow in the steps below.
     rt.solve = std::make_shared<SolveInProgress>(ctx, false, true);
     SolveInProgress& s = *rt.solve;
     s.src = gather_sources(s.br, s.g);
-    s.sv.vector_potential_from_warm_start(s.st);
+    load_update_A(ctx, s.br, s.sv, s.st);
     for (SolveStats& c : s.stats.X.component) c.converged = true;  // nothing solved: nothing to warn of
     s.stats.X.chi.converged = true;
     return;

@@ -1,8 +1,11 @@
-// X^i and A^ij between solves (XCFC::update_every): from the vector potentials the warm start
-// holds (extrapolated in time from the last two solves), without a V-cycle. A full vector solve
-// with no cycles would also set up both equations and their residuals, which cost about half the
-// X solve of a step on the 2D migration grid.
-#include "XCFC/xcfc_system.hpp"
+// X^i and A^ij between solves (XCFC::update_every), without a V-cycle. A vector solve with no
+// cycles would also set up both equations and their residuals, and A^ij from X^i costs Christoffel
+// symbols (sin, cos) per cell: once per solve interval here, a linear combination per update.
+#include "update_between_solves.hpp"
+
+#include "cadence.hpp"
+#include "remnant/vars/XCFC.hpp"
+#include "runtime.hpp"
 
 namespace remnant::xcfc {
 
@@ -22,6 +25,52 @@ void XcfcSolver::vector_potential_from_warm_start(XcfcState& st) {
     });
   }
   compute_A(st);
+}
+
+namespace {
+
+using Potentials = vars::XCFC::potentials;
+constexpr int kPair[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
+
+// A^ij of the X potentials stored in `group` (no extrapolation).
+std::array<CompositeField, 6> A_of(const GridBridge& br, XcfcSolver& sv, int group) {
+  XcfcState tmp;
+  for (int a = 0; a < 3; ++a) tmp.X_potentials.B[a] = br.gather(group, Potentials::idx::XB + a);
+  tmp.X_potentials.chi = br.gather(group, Potentials::idx::Xchi);
+  sv.vector_potential_from_warm_start(tmp);
+  return tmp.A;
+}
+
+}  // namespace
+
+void load_update_A(Context& ctx, const GridBridge& br, XcfcSolver& sv, XcfcState& st) {
+  Runtime& rt = runtime(ctx);
+  Runtime::UpdateA& c = rt.update_A;
+  if (c.solves != rt.solves) {
+    c.last = A_of(br, sv, ctx.var("XCFC::potentials"));
+    c.two = rt.solve_history >= 2 && rt.t_solve_last > rt.t_solve_before;
+    if (c.two) c.before = A_of(br, sv, ctx.var("XCFC::potentials_before"));
+    c.solves = rt.solves;
+  }
+  const std::optional<double> weight = c.two ? solve_extrapolation_weight(ctx) : std::nullopt;
+  const double w = weight && *weight > 0 ? *weight : 0.0;
+  CompositeMultigrid& mg = sv.multigrid();
+  st.A = c.last;
+  st.A2 = mg.field();
+  for (int n = 0; n < mg.parts(); ++n) {
+    const PartGeometry& g = mg.part(n);
+    for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
+      const Point3& f = g.frames().f[p];
+      double A2 = 0;
+      for (int a = 0; a < 3; ++a)
+        for (int b = a; b < 3; ++b) {
+          double& v = st.A[kPair[a][b]].part[n][q];
+          if (w > 0) v += w * (v - c.before[kPair[a][b]].part[n][q]);
+          A2 += (a == b ? 1.0 : 2.0) * f[a] * f[b] * v * v;
+        }
+      st.A2.part[n][q] = A2;
+    });
+  }
 }
 
 }  // namespace remnant::xcfc
