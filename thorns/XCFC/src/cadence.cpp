@@ -135,7 +135,7 @@ void cadence(Context& ctx) {
     rt.stage = Stage::solve, rt.reason = "cadence", rt.sources_due = true;
     return;
   }
-  // XCFC::update_every: psi, alpha psi and beta^i re-solved with this step's matter (X^i held).
+  // XCFC::update_every: psi, alpha psi and beta^i re-solved with this step's matter (A^ij extrapolated).
   const std::int64_t update_every = ctx.param<std::int64_t>("XCFC", "update_every");
   if (update_every > 0 && rt.steps_since_solve % update_every == 0) {
     rt.stage = Stage::update, rt.sources_due = true;

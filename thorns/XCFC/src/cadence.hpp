@@ -2,7 +2,9 @@
 // When XCFC solves and what the metric is in between (paper, "Spacetime Solvers"; README,
 // "Cadence"): a solve every XCFC::solve_every matter steps or when the psi residual exceeds
 // XCFC::residual_trigger; between solves the metric is held or extrapolated linearly in time from
-// the last two solves (XCFC::metric_history), and the warm starts of a solve are extrapolated alike.
+// the last two solves (XCFC::metric_history), and the warm starts of a solve are extrapolated alike;
+// every XCFC::update_every steps between solves psi, alpha psi and beta^i are re-solved with the
+// current matter (an update, recorded in the history like a solve; A^ij from the last two solves).
 // The group XCFC_Solve (thorn.yaml) runs its steps in passes: XCFC_Extrapolate, the solve's steps
 // (solve_sequence.hpp) with the recovery group, XCFC_ResidualTrigger; a step whose stage is not
 // the current one does nothing.

@@ -59,7 +59,7 @@ XcfcSolver& solver(Context& ctx) {
 }
 
 std::string save_persistent(const Runtime& rt) {
-  char text[200];
+  char text[400];  // 11 fields: at most 5 x 24 (hexadecimal floats) + 6 x 20 characters and the spaces
   std::snprintf(text, sizeof text, "%lld %lld %a %a %d %a %lld %lld %a %a %d", static_cast<long long>(rt.steps_since_solve),
                 static_cast<long long>(rt.solves), rt.t_last, rt.t_before, rt.history, rt.t_earlier,
                 static_cast<long long>(rt.updates), static_cast<long long>(rt.update_cycles), rt.t_solve_last,

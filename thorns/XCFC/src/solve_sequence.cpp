@@ -71,7 +71,7 @@ struct SolveInProgress {
   XcfcState st;
   XcfcStats stats;
   Sources src;  // the matter sources of the current step
-  const bool update;  // between solves: psi, alpha psi and beta^i with the last solve's X^i
+  const bool update;  // between solves: psi, alpha psi and beta^i, A^ij from the last two solves
 
   SolveInProgress(Context& ctx, bool initial, bool update_only = false)
       : sv(solver(ctx)), br(ctx, sv.multigrid()), g(SpacetimeGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
