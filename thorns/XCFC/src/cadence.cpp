@@ -38,10 +38,17 @@ std::optional<double> extrapolation_weight(Context& ctx) {
   return (ctx.time() - rt.t_last) / (rt.t_last - rt.t_before);
 }
 
-void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st) {
-  const std::optional<double> weight = extrapolation_weight(ctx);
-  const bool extrapolate = weight && *weight > 0;
-  const double w = extrapolate ? *weight : 0.0;
+std::optional<double> solve_extrapolation_weight(Context& ctx) {
+  const Runtime& rt = runtime(ctx);
+  if (rt.solve_history < 2 || !(rt.t_solve_last > rt.t_solve_before)) return std::nullopt;
+  return (ctx.time() - rt.t_solve_last) / (rt.t_solve_last - rt.t_solve_before);
+}
+
+void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st,
+                     bool with_X) {
+  const std::optional<double> weight = extrapolation_weight(ctx), x_weight = solve_extrapolation_weight(ctx);
+  const bool extrapolate = weight && *weight > 0, extrapolate_X = x_weight && *x_weight > 0;
+  const double w = extrapolate ? *weight : 0.0, wx = extrapolate_X ? *x_weight : 0.0;
   const int hist = ctx.var("XCFC::metric_history"), before = ctx.var("XCFC::potentials_before");
   // last + w (last - before) of two fields of a block, per cell.
   auto extrapolated = [w](Field last, Field prev) {
@@ -64,24 +71,32 @@ void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& 
     if (!extrapolate) return br.gather(potentials, c);
     return br.gather_cells([&](Block& b) { return extrapolated(b.field(potentials, c), b.field(before, c)); });
   };
+  // X's potentials from the last two solves (updates between solves keep them).
+  auto X_potential = [&](int c) {
+    if (!extrapolate_X) return br.gather(potentials, c);
+    return br.gather_cells([&](Block& b) {
+      const Field last = b.field(potentials, c), prev = b.field(before, c);
+      return [=](int i, int j, int k) { return last(i, j, k) + wx * (last(i, j, k) - prev(i, j, k)); };
+    });
+  };
   for (int a = 0; a < 3; ++a) {
-    st.X_potentials.B[a] = potential(Potentials::idx::XB + a);
+    if (with_X) st.X_potentials.B[a] = X_potential(Potentials::idx::XB + a);
     st.beta_potentials.B[a] = potential(Potentials::idx::betaB + a);
   }
-  st.X_potentials.chi = potential(Potentials::idx::Xchi);
+  if (with_X) st.X_potentials.chi = X_potential(Potentials::idx::Xchi);
   st.beta_potentials.chi = potential(Potentials::idx::betachi);
 }
 
-void shift_potentials(Context& ctx, int potentials) {
+void shift_potentials(Context& ctx, int potentials, bool update) {
   const int before = ctx.var("XCFC::potentials_before");
   for (Block* b : ctx.grid().local_blocks())
-    for (int c = 0; c < Potentials::ncomp; ++c) {
+    for (int c = update ? Potentials::idx::betaB : 0; c < Potentials::ncomp; ++c) {
       Field p = b->field(potentials, c), q = b->field(before, c);
       for_interior(*b, [&](int i, int j, int k) { q(i, j, k) = p(i, j, k); });
     }
 }
 
-void record_history(Context& ctx) {
+void record_history(Context& ctx, bool update) {
   Runtime& rt = runtime(ctx);
   const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
   for (Block* b : ctx.grid().local_blocks())
@@ -102,6 +117,10 @@ void record_history(Context& ctx) {
   rt.t_before = rt.t_last;
   rt.t_last = ctx.time();
   rt.history = std::min(rt.history + 1, 3);
+  if (update) return;
+  rt.t_solve_before = rt.t_solve_last;
+  rt.t_solve_last = rt.t_last;
+  rt.solve_history = std::min(rt.solve_history + 1, 2);
   ++rt.solves;
   rt.steps_since_solve = 0;
 }
@@ -114,6 +133,12 @@ void cadence(Context& ctx) {
   ++rt.steps_since_solve;
   if (rt.steps_since_solve >= every) {
     rt.stage = Stage::solve, rt.reason = "cadence", rt.sources_due = true;
+    return;
+  }
+  // XCFC::update_every: psi, alpha psi and beta^i re-solved with this step's matter (A^ij extrapolated).
+  const std::int64_t update_every = ctx.param<std::int64_t>("XCFC", "update_every");
+  if (update_every > 0 && rt.steps_since_solve % update_every == 0) {
+    rt.stage = Stage::update, rt.sources_due = true;
     return;
   }
   rt.stage = ctx.param<std::string>("XCFC", "extrapolation") != "hold" ? Stage::extrapolate : Stage::check_trigger;

@@ -2,7 +2,9 @@
 // When XCFC solves and what the metric is in between (paper, "Spacetime Solvers"; README,
 // "Cadence"): a solve every XCFC::solve_every matter steps or when the psi residual exceeds
 // XCFC::residual_trigger; between solves the metric is held or extrapolated linearly in time from
-// the last two solves (XCFC::metric_history), and the warm starts of a solve are extrapolated alike.
+// the last two solves (XCFC::metric_history), and the warm starts of a solve are extrapolated alike;
+// every XCFC::update_every steps between solves psi, alpha psi and beta^i are re-solved with the
+// current matter (an update, recorded in the history like a solve; A^ij from the last two solves).
 // The group XCFC_Solve (thorn.yaml) runs its steps in passes: XCFC_Extrapolate, the solve's steps
 // (solve_sequence.hpp) with the recovery group, XCFC_ResidualTrigger; a step whose stage is not
 // the current one does nothing.
@@ -24,19 +26,30 @@ std::optional<double> extrapolation_weight(Context& ctx);
 
 // The warm starts: the last solve's psi, alpha psi and potentials, or, once two solves are
 // recorded, their linear extrapolation in time to now (w = (t - t_last) / (t_last - t_before)): the
-// change between solves is then left to second order, which saves V-cycles.
-void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st);
+// change between solves is then left to second order, which saves V-cycles. With updates between
+// solves (XCFC::update_every) psi, alpha psi and beta's potentials come from the latest two metrics,
+// solved or updated, and X's potentials from the last two solves (their own times).
+// with_X = false (an update): X's potentials are left out (update_between_solves.hpp gives A^ij).
+void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st,
+                     bool with_X = true);
 
-// XCFC::potentials (the last solve's) -> XCFC::potentials_before, before the new ones are stored.
-void shift_potentials(Context& ctx, int potentials);
+// The weight of X's potentials: (t - t_solve_last) / (t_solve_last - t_solve_before), or none
+// before two solves.
+std::optional<double> solve_extrapolation_weight(Context& ctx);
+
+// XCFC::potentials (the last solve's) -> XCFC::potentials_before, before the new ones are stored;
+// an update shifts only beta's (it keeps X's).
+void shift_potentials(Context& ctx, int potentials, bool update = false);
 
 // Shifts XCFC::metric_history (last -> before), stores the metric just solved as the last and
-// counts the solve.
-void record_history(Context& ctx);
+// counts the solve; an update between solves (XCFC::update_every) is recorded but not counted, so
+// that the extrapolation and the warm starts take the latest two metrics, solved or updated.
+void record_history(Context& ctx, bool update = false);
 
 // XCFC_Cadence (prestep, before the group XCFC_Solve): what this step's passes of XCFC_Solve do:
-// a solve when the cadence asks for one, else the extrapolation (XCFC::extrapolation = linear) or
-// only the residual trigger's test.
+// a solve when the cadence asks for one, an update of psi, alpha psi and beta^i every
+// XCFC::update_every steps between solves, else the extrapolation (XCFC::extrapolation = linear or
+// quadratic) or only the residual trigger's test.
 void cadence(Context& ctx);
 // XCFC_Extrapolate: the metric extrapolated to the current time; the recovery is then due.
 void extrapolate(Context& ctx);

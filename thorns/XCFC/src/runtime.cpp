@@ -1,5 +1,6 @@
 #include "runtime.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -49,6 +50,7 @@ XcfcSolver& solver(Context& ctx) {
                "(refine all theta near the origin, e.g. with a Grid::regions sphere; thorns/XCFC/README.md)"),
           rt.warned_theta = true;
     rt.layout = lay;
+    rt.update_A = {};  // of the old mesh
     // The base level's cycles are split between the ranks; patches are computed by every rank.
     rt.solver = lay.patches.empty() ? std::make_unique<XcfcSolver>(lay.base, ctx.grid().comm())
                                     : std::make_unique<XcfcSolver>(lay, ctx.grid().comm());
@@ -57,9 +59,11 @@ XcfcSolver& solver(Context& ctx) {
 }
 
 std::string save_persistent(const Runtime& rt) {
-  char text[200];
-  std::snprintf(text, sizeof text, "%lld %lld %a %a %d %a", static_cast<long long>(rt.steps_since_solve),
-                static_cast<long long>(rt.solves), rt.t_last, rt.t_before, rt.history, rt.t_earlier);
+  char text[400];  // 11 fields: at most 5 x 24 (hexadecimal floats) + 6 x 20 characters and the spaces
+  std::snprintf(text, sizeof text, "%lld %lld %a %a %d %a %lld %lld %a %a %d", static_cast<long long>(rt.steps_since_solve),
+                static_cast<long long>(rt.solves), rt.t_last, rt.t_before, rt.history, rt.t_earlier,
+                static_cast<long long>(rt.updates), static_cast<long long>(rt.update_cycles), rt.t_solve_last,
+                rt.t_solve_before, rt.solve_history);
   return text;
 }
 
@@ -73,6 +77,16 @@ void restore_persistent(Runtime& rt, const std::string& text) {
   rt.t_last = std::strtod(t_last.c_str(), nullptr);
   rt.t_before = std::strtod(t_before.c_str(), nullptr);
   rt.t_earlier = std::strtod(t_earlier.c_str(), nullptr);
+  // The updates between solves (XCFC::update_every) came later: a checkpoint without their fields
+  // has none, and its last solves are those of the history.
+  std::string t_solve_last, t_solve_before;
+  if (s >> rt.updates >> rt.update_cycles >> t_solve_last >> t_solve_before >> rt.solve_history) {
+    rt.t_solve_last = std::strtod(t_solve_last.c_str(), nullptr);
+    rt.t_solve_before = std::strtod(t_solve_before.c_str(), nullptr);
+    return;
+  }
+  rt.updates = rt.update_cycles = 0;
+  rt.t_solve_last = rt.t_last, rt.t_solve_before = rt.t_before, rt.solve_history = std::min(rt.history, 2);
 }
 
 }  // namespace remnant::xcfc

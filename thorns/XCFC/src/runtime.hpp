@@ -3,6 +3,7 @@
 // several simulations in one process, e.g. tests, do not share it). Everything a bit-identical
 // continuation needs is either on the grid (Spacetime::metric, XCFC::potentials: the warm starts;
 // XCFC::metric_history) or in the persistent counters saved with the checkpoint.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -16,8 +17,9 @@ namespace remnant::xcfc {
 struct SolveInProgress;
 
 // What the scheduled steps of XCFC_Solve do in the current pass (cadence.hpp): nothing more
-// (idle), a solve, the metric extrapolated in time, or the residual trigger's test.
-enum class Stage { idle, solve, extrapolate, check_trigger };
+// (idle), a solve, the metric extrapolated in time, the update of psi and alpha psi with the current
+// matter between solves (XCFC::update_cycles), or the residual trigger's test.
+enum class Stage { idle, solve, extrapolate, update, check_trigger };
 
 struct Runtime {
   Stage stage = Stage::idle;
@@ -38,6 +40,21 @@ struct Runtime {
   // Times of the last three solves and how many of XCFC::metric_history's three slots are filled.
   double t_last = 0, t_before = 0, t_earlier = 0;
   int history = 0;
+  // Steps since the last solve whose psi and alpha psi were updated (XCFC::update_cycles), and the
+  // V-cycles they took: logged with the next solve in xcfc.tsv.
+  std::int64_t updates = 0, update_cycles = 0;
+  // Times of the last two full solves and how many are recorded: X^i's potentials are extrapolated
+  // from these (updates keep X^i); without updates they equal t_last, t_before.
+  double t_solve_last = 0, t_solve_before = 0;
+  int solve_history = 0;
+  // A^ij of the last two solves' X potentials, computed at the first update after a solve (for
+  // solve count `solves`; rebuilt with the solver). Not checkpointed: recomputed from the same
+  // potentials after a restart, so the updates stay bit-identical.
+  struct UpdateA {
+    std::int64_t solves = -1;
+    bool two = false;  // A_before holds the solve before the last
+    std::array<CompositeField, 6> last, before;
+  } update_A;
   bool tsv_started = false;  // xcfc.tsv created (fresh run) or trimmed (recovered run) by this process
   bool warned_theta = false;
 };

@@ -16,15 +16,16 @@ void write_tsv(Context& ctx, const char* reason, const XcfcStats& s, double seco
   if (!rt.tsv_started)
     start_or_resume_tsv_file(ctx, path,
                              "# iteration\ttime\treason\tX_cycles\tX_residual\tpsi_cycles\tpsi_residual\talphapsi_cycles\t"
-                             "alphapsi_residual\tbeta_cycles\tbeta_residual\twall_s\n",
+                             "alphapsi_residual\tbeta_cycles\tbeta_residual\tupdates\tupdate_cycles\twall_s\n",
                              RowTime::before_step);  // a prestep row of iteration n follows n's checkpoint
   rt.tsv_started = true;
   std::ofstream out(path, std::ios::app);
   auto rel = [](const SolveStats& x) { return x.scale > 0 ? x.residual / x.scale : x.residual; };
   char line[512];
-  std::snprintf(line, sizeof line, "%lld\t%.17g\t%s\t%d\t%.3e\t%d\t%.3e\t%d\t%.3e\t%d\t%.3e\t%.6f\n",
+  std::snprintf(line, sizeof line, "%lld\t%.17g\t%s\t%d\t%.3e\t%d\t%.3e\t%d\t%.3e\t%d\t%.3e\t%lld\t%lld\t%.6f\n",
                 static_cast<long long>(ctx.iteration()), ctx.time(), reason, s.X.cycles(), s.X.residual(), s.psi.cycles,
-                rel(s.psi), s.alpha_psi.cycles, rel(s.alpha_psi), s.beta.cycles(), s.beta.residual(), seconds);
+                rel(s.psi), s.alpha_psi.cycles, rel(s.alpha_psi), s.beta.cycles(), s.beta.residual(),
+                static_cast<long long>(rt.updates), static_cast<long long>(rt.update_cycles), seconds);
   out << line;
 }
 

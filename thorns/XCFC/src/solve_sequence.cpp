@@ -14,6 +14,7 @@
 #include "remnant/vars/XCFC.hpp"
 #include "runtime.hpp"
 #include "solve_log.hpp"
+#include "update_between_solves.hpp"
 
 namespace remnant::xcfc {
 namespace {
@@ -44,14 +45,15 @@ Sources gather_sources(const GridBridge& br, const SpacetimeGroups& g) {
   return s;
 }
 
-void store_lapse_shift(const GridBridge& br, const SpacetimeGroups& g, int potentials, const XcfcState& st) {
+// An update (update = true) stores no X potentials: they stay the last solve's.
+void store_lapse_shift(const GridBridge& br, const SpacetimeGroups& g, int potentials, const XcfcState& st, bool update) {
   br.scatter(st.alpha(), g.metric, Metric::idx::alpha);
   for (int d = 0; d < 3; ++d) br.scatter(st.beta[d], g.metric, Metric::idx::beta + d);
   for (int a = 0; a < 3; ++a) {
-    br.scatter(st.X_potentials.B[a], potentials, Potentials::idx::XB + a);
+    if (!update) br.scatter(st.X_potentials.B[a], potentials, Potentials::idx::XB + a);
     br.scatter(st.beta_potentials.B[a], potentials, Potentials::idx::betaB + a);
   }
-  br.scatter(st.X_potentials.chi, potentials, Potentials::idx::Xchi);
+  if (!update) br.scatter(st.X_potentials.chi, potentials, Potentials::idx::Xchi);
   br.scatter(st.beta_potentials.chi, potentials, Potentials::idx::betachi);
 }
 
@@ -69,11 +71,12 @@ struct SolveInProgress {
   XcfcState st;
   XcfcStats stats;
   Sources src;  // the matter sources of the current step
+  const bool update;  // between solves: psi, alpha psi and beta^i, A^ij from the last two solves
 
-  SolveInProgress(Context& ctx, bool initial)
+  SolveInProgress(Context& ctx, bool initial, bool update_only = false)
       : sv(solver(ctx)), br(ctx, sv.multigrid()), g(SpacetimeGroups::of(ctx)), potentials(ctx.var("XCFC::potentials")),
-        set(settings(ctx, initial)) {
-    load_warm_start(ctx, br, g, potentials, st);
+        set(settings(ctx, initial)), update(update_only) {
+    load_warm_start(ctx, br, g, potentials, st, !update_only);
   }
 };
 
@@ -88,15 +91,22 @@ void lapse(SolveInProgress& s) {
   s.sv.solve_lapse(s.src.E, S, s.st, s.stats, s.set);
 }
 
-// beta, then the solve stored, recorded and logged.
+// beta, then the solve stored, recorded and logged (an update is counted in the next solve's line).
 void shift_and_finish(Context& ctx, SolveInProgress& s) {
   s.sv.solve_shift(s.src.E, s.src.S, s.st, s.stats, s.set);
-  shift_potentials(ctx, s.potentials);
-  store_lapse_shift(s.br, s.g, s.potentials, s.st);
-  record_history(ctx);
+  shift_potentials(ctx, s.potentials, s.update);
+  store_lapse_shift(s.br, s.g, s.potentials, s.st, s.update);
+  record_history(ctx, s.update);
   warn_unconverged(ctx, s.stats);
   Runtime& rt = runtime(ctx);
+  if (s.update) {
+    ++rt.updates;
+    rt.update_cycles += s.stats.psi.cycles + s.stats.alpha_psi.cycles + s.stats.beta.cycles();
+    rt.solve.reset();
+    return;
+  }
   write_tsv(ctx, rt.reason, s.stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - s.t0).count());
+  rt.updates = rt.update_cycles = 0;  // logged with this solve
   rt.solve.reset();
 }
 
@@ -104,6 +114,17 @@ void shift_and_finish(Context& ctx, SolveInProgress& s) {
 
 void step_vector_potential(Context& ctx) {
   Runtime& rt = runtime(ctx);
+  if (rt.stage == Stage::update) {
+    // Between solves: A^ij extrapolated from the last two solves' X^i, no V-cycle; psi, alpha psi
+    // and beta^i follow in the steps below.
+    rt.solve = std::make_shared<SolveInProgress>(ctx, false, true);
+    SolveInProgress& s = *rt.solve;
+    s.src = gather_sources(s.br, s.g);
+    load_update_A(ctx, s.br, s.sv, s.st);
+    for (SolveStats& c : s.stats.X.component) c.converged = true;  // nothing solved: nothing to warn of
+    s.stats.X.chi.converged = true;
+    return;
+  }
   if (rt.stage != Stage::solve) return;
   rt.solve = std::make_shared<SolveInProgress>(ctx, false);
   SolveInProgress& s = *rt.solve;
@@ -126,8 +147,10 @@ void step_lapse(Context& ctx) {
 void step_shift(Context& ctx) {
   SolveInProgress* s = in_progress(ctx);
   if (!s) return;
+  const bool update = s->update;
   shift_and_finish(ctx, *s);
-  runtime(ctx).stage = Stage::idle;
+  // After an update the residual trigger may still ask for a solve.
+  runtime(ctx).stage = update ? Stage::check_trigger : Stage::idle;
 }
 
 void initial_conformal_factor(Context& ctx) {

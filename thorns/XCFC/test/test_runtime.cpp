@@ -39,6 +39,30 @@ TEST(XCFCRuntime, PersistentCountersRoundTripBitForBit) {
   EXPECT_THROW(xcfc::restore_persistent(restored, "4 12"), RunError);
 }
 
+TEST(XCFCRuntime, UpdateCountersAndSolveTimesRoundTrip) {
+  // XCFC::update_every: the updates since the last solve and the times of the last two solves
+  // (X's extrapolation) survive a checkpoint.
+  xcfc::Runtime saved;
+  saved.history = 3, saved.t_last = 5.5, saved.t_before = 5.25, saved.t_earlier = 5.0;
+  saved.updates = 9, saved.update_cycles = 31, saved.solve_history = 2;
+  saved.t_solve_last = 1.0 / 3.0 + 4, saved.t_solve_before = 0.1 + 0.7;
+  xcfc::Runtime restored;
+  xcfc::restore_persistent(restored, xcfc::save_persistent(saved));
+  EXPECT_EQ(restored.updates, 9);
+  EXPECT_EQ(restored.update_cycles, 31);
+  EXPECT_EQ(restored.solve_history, 2);
+  EXPECT_EQ(restored.t_solve_last, saved.t_solve_last);
+  EXPECT_EQ(restored.t_solve_before, saved.t_solve_before);
+  // A checkpoint written before the updates existed: no updates, the last solves are the history's.
+  xcfc::Runtime old;
+  xcfc::restore_persistent(old, "4 12 0x1.6p+2 0x1.5p+2 3 0x1.4p+2");
+  EXPECT_EQ(old.updates, 0);
+  EXPECT_EQ(old.update_cycles, 0);
+  EXPECT_EQ(old.t_solve_last, 5.5);
+  EXPECT_EQ(old.t_solve_before, 5.25);
+  EXPECT_EQ(old.solve_history, 2);
+}
+
 TEST(XCFCCadence, QuadraticExtrapolationWeightsAreExactForQuadratics) {
   // Unequal solve intervals (a residual-triggered solve) and a time past the last solve.
   const std::array<double, 3> times{2.5, 1.75, 0.5};

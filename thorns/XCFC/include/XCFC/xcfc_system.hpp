@@ -49,6 +49,8 @@ class XcfcSolver {
   // The same steps one by one, as the schedule runs them (X^i and A^ij; psi; alpha psi; beta^i).
   void solve_vector_potential(const CompositeField& E, const VectorField& S_dn, XcfcState& st, XcfcStats& stats,
                               const SolveSettings& settings);
+  // X^i and A^ij from st's X potentials, no V-cycle (updates between solves; update_between_solves.cpp).
+  void vector_potential_from_warm_start(XcfcState& st);
   void solve_psi(const CompositeField& E, XcfcState& st, XcfcStats& stats, const SolveSettings& settings);
   void solve_lapse(const CompositeField& E, const CompositeField& S_trace, XcfcState& st, XcfcStats& stats,
                    const SolveSettings& settings);
