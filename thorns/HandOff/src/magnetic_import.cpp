@@ -9,6 +9,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -99,16 +100,28 @@ struct LevelFaces {
   }
 };
 
+// The cells of one block (a local one, or a finer leaf next to it) in its level's global indices:
+// the frame the edge tables are built on.
+struct Frame {
+  std::array<std::int64_t, 3> first{};  // global index of the first cell (0 in unused directions)
+  std::array<int, 3> n{1, 1, 1};
+  std::array<bool, 3> used{};
+  LevelFaces F;            // the level's face coordinates
+  std::int64_t cells_m = 0;  // 2D: the level's cells along the marching direction (R or theta)
+  double phi_hi = 0;         // 2D: the upper phi face
+};
+
 // Edge integrals of the potential, per direction, in vector_potential.hpp's indexing (cell along
 // the edge, faces across it; one index in unused directions).
 struct EdgeTable {
   std::array<std::array<int, 3>, 3> extent{};
   std::array<std::vector<double>, 3> value;
-  explicit EdgeTable(const Block& b) {
+  explicit EdgeTable(const Frame& f) {
     for (int a = 0; a < 3; ++a) {
-      for (int d = 0; d < 3; ++d)
-        extent[static_cast<std::size_t>(a)][static_cast<std::size_t>(d)] =
-            d == a || !direction_used(b, d) ? b.n[static_cast<std::size_t>(d)] : b.n[static_cast<std::size_t>(d)] + 1;
+      for (int d = 0; d < 3; ++d) {
+        const auto ud = static_cast<std::size_t>(d);
+        extent[static_cast<std::size_t>(a)][ud] = d == a || !f.used[ud] ? f.n[ud] : f.n[ud] + 1;
+      }
       const auto& e = extent[static_cast<std::size_t>(a)];
       value[static_cast<std::size_t>(a)].assign(static_cast<std::size_t>(e[0]) * static_cast<std::size_t>(e[1]) * static_cast<std::size_t>(e[2]), 0.0);
     }
@@ -116,6 +129,11 @@ struct EdgeTable {
   double& operator()(int a, int i, int j, int k) {
     const auto& e = extent[static_cast<std::size_t>(a)];
     return value[static_cast<std::size_t>(a)][static_cast<std::size_t>(i + e[0] * (j + e[1] * k))];
+  }
+  bool contains(int a, const std::array<std::int64_t, 3>& p) const {
+    for (std::size_t d = 0; d < 3; ++d)
+      if (p[d] < 0 || p[d] >= extent[static_cast<std::size_t>(a)][d]) return false;
+    return true;
   }
 };
 
@@ -149,24 +167,22 @@ hydrobase::CovariantPotential table_potential(const Block& b, EdgeTable& t) {
 }
 
 // 2D cylindrical (march along R from the axis, fluxes through z faces) or spherical (along theta
-// from the pole, through r faces): 2 pi A_phi = Psi at every node; then B^phi on the phi faces.
+// from the pole, through r faces): 2 pi A_phi = Psi at every node of the frame.
 // closure: the largest |Psi at the grid's far end| / sum |flux| of a row with field at its far end
 // that is taken for the data's interpolation error and removed (HandOff::flux_closure_tolerance).
-void axisymmetric_block(const Block& b, const FluxQuadrature& q, const LevelFaces& F, std::int64_t cells_m, double closure,
-                        const std::array<Field, 3>& faces) {
-  const bool cyl = b.coordinates == CoordinateSystem::cylindrical;
+EdgeTable axisymmetric_edges(const Frame& fr, bool cyl, const FluxQuadrature& q, double closure) {
   const int m = cyl ? 0 : 1, d = cyl ? 1 : 0;
   const auto um = static_cast<std::size_t>(m), ud = static_cast<std::size_t>(d);
-  const std::int64_t first = b.index[um] * b.n[um];
-  EdgeTable t(b);
-  const double phi_lo = b.face_coordinate(2, 0), phi_hi = b.face_coordinate(2, 1);
-  std::vector<double> psi(static_cast<std::size_t>(cells_m + 1)), weight(static_cast<std::size_t>(cells_m + 1));
-  for (int fd = 0; fd <= b.n[ud]; ++fd) {
-    const double xd = b.face_coordinate(d, fd);
+  const LevelFaces& F = fr.F;
+  EdgeTable t(fr);
+  const double phi_lo = F(2, 0), phi_hi = fr.phi_hi;
+  std::vector<double> psi(static_cast<std::size_t>(fr.cells_m + 1)), weight(static_cast<std::size_t>(fr.cells_m + 1));
+  for (int fd = 0; fd <= fr.n[ud]; ++fd) {
+    const double xd = F(d, fr.first[ud] + fd);
     // Psi and the cumulative |flux| at every node of the row, from the axis to the grid's far end.
     psi[0] = weight[0] = 0;
     double last = 0;  // the flux through the row's last face
-    for (std::int64_t g = 0; g < cells_m; ++g) {
+    for (std::int64_t g = 0; g < fr.cells_m; ++g) {
       Point3 lo{}, hi{};
       lo[um] = F(m, g), hi[um] = F(m, g + 1), lo[2] = phi_lo, hi[2] = phi_hi;
       const double f = q.flux(d, xd, lo, hi);
@@ -178,13 +194,17 @@ void axisymmetric_block(const Block& b, const FluxQuadrature& q, const LevelFace
     // the data: removed in proportion to |flux| (so nothing is added where the data have no field).
     const double total = weight.back(), leak = psi.back();
     const bool close = total > 0 && (last == 0.0 || std::abs(leak) <= closure * total);
-    for (int fm = 0; fm <= b.n[um]; ++fm) {
-      const auto u = static_cast<std::size_t>(first + fm);
+    for (int fm = 0; fm <= fr.n[um]; ++fm) {
+      const auto u = static_cast<std::size_t>(fr.first[um] + fm);
       t(2, cyl ? fm : fd, cyl ? fd : fm, 0) = close ? psi[u] - leak * (weight[u] / total) : psi[u];
     }
   }
-  hydrobase::set_faces_from_edges(b, hydrobase::EdgeIntegrals(b, table_potential(b, t), 1), faces);
-  // B^phi: the phi-averaged field averaged over each phi face (phi is unused: no divergence).
+  return t;
+}
+
+// 2D: B^phi, the phi-averaged field averaged over each phi face (phi is unused: no divergence).
+void toroidal_faces(const Block& b, const FluxQuadrature& q, const std::array<Field, 3>& faces) {
+  const double phi_lo = b.face_coordinate(2, 0);
   for (int j = 0; j < b.n[1]; ++j)
     for (int i = 0; i < b.n[0]; ++i) {
       const Point3 lo{b.face_coordinate(0, i), b.face_coordinate(1, j), 0}, hi{b.face_coordinate(0, i + 1), b.face_coordinate(1, j + 1), 0};
@@ -194,15 +214,16 @@ void axisymmetric_block(const Block& b, const FluxQuadrature& q, const LevelFace
 }
 
 // 3D Cartesian: A_z = 0; A_y on the lowest z face from its z fluxes, then A_x, A_y upwards.
-void cartesian_block(const Block& b, const FluxQuadrature& q, const LevelFaces& F, const std::array<Field, 3>& faces) {
-  const std::int64_t gx = b.index[0] * b.n[0], gy = b.index[1] * b.n[1], gz = b.index[2] * b.n[2];
-  const std::int64_t top = gz + b.n[2];
-  EdgeTable t(b);
+EdgeTable cartesian_edges(const Frame& fr, const FluxQuadrature& q) {
+  const LevelFaces& F = fr.F;
+  const std::int64_t gx = fr.first[0], gy = fr.first[1], gz = fr.first[2];
+  const std::int64_t top = gz + fr.n[2];
+  EdgeTable t(fr);
   // A_y along y edges at x faces (i), y cells (j): base from the z faces of the lowest plane.
-  for (int j = 0; j < b.n[1]; ++j) {
+  for (int j = 0; j < fr.n[1]; ++j) {
     const Point3 ylo{0, F(1, gy + j), 0}, yhi{0, F(1, gy + j + 1), 0};
     double base = 0;
-    for (std::int64_t g = 0; g <= gx + b.n[0]; ++g) {
+    for (std::int64_t g = 0; g <= gx + fr.n[0]; ++g) {
       if (g >= gx) {
         const int i = static_cast<int>(g - gx);
         double ay = base;  // integrate upwards: A_y(k + 1) = A_y(k) - flux through the x face of cell k
@@ -212,13 +233,13 @@ void cartesian_block(const Block& b, const FluxQuadrature& q, const LevelFaces& 
           ay -= q.flux(0, F(0, g), {0, ylo[1], F(2, h)}, {0, yhi[1], F(2, h + 1)});
         }
       }
-      if (g == gx + b.n[0]) break;
+      if (g == gx + fr.n[0]) break;
       base += q.flux(2, F(2, 0), {F(0, g), ylo[1], 0}, {F(0, g + 1), yhi[1], 0});
     }
   }
   // A_x along x edges at x cells (i), y faces (j): zero on the lowest plane, + flux through y faces.
-  for (int j = 0; j <= b.n[1]; ++j)
-    for (int i = 0; i < b.n[0]; ++i) {
+  for (int j = 0; j <= fr.n[1]; ++j)
+    for (int i = 0; i < fr.n[0]; ++i) {
       double ax = 0;
       for (std::int64_t h = 0; h <= top; ++h) {
         if (h >= gz) t(0, i, j, static_cast<int>(h - gz)) = ax;
@@ -226,7 +247,77 @@ void cartesian_block(const Block& b, const FluxQuadrature& q, const LevelFaces& 
         ax += q.flux(1, F(1, gy + j), {F(0, gx + i), 0, F(2, h)}, {F(0, gx + i + 1), 0, F(2, h + 1)});
       }
     }
-  hydrobase::set_faces_from_edges(b, hydrobase::EdgeIntegrals(b, table_potential(b, t), 1), faces);
+  return t;
+}
+
+// How a level's edge tables are built: the potential's construction for the grid's coordinates.
+struct EdgeBuilder {
+  const FluxQuadrature& q;
+  CoordinateSystem cs;
+  bool phi_average;
+  double closure;
+  std::array<double, 3> xmin{}, xmax{};
+  int m = 0;  // 2D: the marching direction
+
+  // The frame of the leaf `key` of blocks shaped like b (all blocks have b's cell counts).
+  Frame frame(const Block& b, const BlockKey& key) const {
+    Frame f;
+    const double scale = std::ldexp(1.0, b.level - key.level);  // exact: spacings halve per level
+    for (std::size_t d = 0; d < 3; ++d) {
+      f.used[d] = direction_used(b, static_cast<int>(d));
+      f.n[d] = b.n[d];
+      f.first[d] = f.used[d] ? key.index[d] * b.n[d] : 0;
+      f.F.domain_lo[d] = xmin[d];
+      f.F.dx[d] = f.used[d] ? b.dx[d] * scale : b.dx[d];
+    }
+    if (phi_average) {
+      f.F.domain_lo[2] = b.face_coordinate(2, 0);
+      f.phi_hi = b.face_coordinate(2, 1);
+      const auto um = static_cast<std::size_t>(m);
+      f.cells_m = static_cast<std::int64_t>(std::llround((xmax[um] - xmin[um]) / f.F.dx[um]));
+    }
+    return f;
+  }
+  EdgeTable edges(const Frame& f) const {
+    return phi_average ? axisymmetric_edges(f, cs == CoordinateSystem::cylindrical, q, closure) : cartesian_edges(f, q);
+  }
+};
+
+// Coarse-fine matching: an edge of b that lies on the boundary of a leaf one level finer takes the
+// sum of that leaf's edges along it (the coincident node value along an unused direction), so
+// that every face of b on the interface carries exactly the sum of the fine fluxes through it
+// (the circulations around it agree) and the Grid's restriction and divergence-preserving
+// prolongation see consistent levels. All blocks that share such an edge touch that leaf and make
+// the same replacement; the leaf itself computes the same fine values (same sums in the same
+// order). 2:1 balance across faces, edges and corners: no coarser or finer leaf touches those edges.
+void match_finer_leaves(const Block& b, const Frame& fb, const EdgeBuilder& builder, std::span<const BlockKey> leaves,
+                        EdgeTable& t) {
+  for (const BlockKey& key : leaves) {
+    if (key.level != b.level + 1) continue;
+    const Frame ff = builder.frame(b, key);
+    bool touches = true;  // closed boxes intersect (in the coarse level's indices, times 2)
+    for (std::size_t d = 0; d < 3 && touches; ++d)
+      if (fb.used[d]) touches = 2 * fb.first[d] <= ff.first[d] + ff.n[d] && ff.first[d] <= 2 * (fb.first[d] + fb.n[d]);
+    if (!touches) continue;
+    EdgeTable fine = builder.edges(ff);
+    for (int a = 0; a < 3; ++a) {
+      const auto& e = t.extent[static_cast<std::size_t>(a)];
+      for (int k = 0; k < e[2]; ++k)
+        for (int j = 0; j < e[1]; ++j)
+          for (int i = 0; i < e[0]; ++i) {
+            const std::array<int, 3> c{i, j, k};
+            std::array<std::int64_t, 3> p{};  // the first fine edge, in the leaf's local indices
+            for (std::size_t d = 0; d < 3; ++d) p[d] = fb.used[d] ? 2 * (fb.first[d] + c[d]) - ff.first[d] : 0;
+            std::array<std::int64_t, 3> p2 = p;  // the second half along a used edge direction
+            const bool halves = fb.used[static_cast<std::size_t>(a)];
+            if (halves) p2[static_cast<std::size_t>(a)] += 1;
+            if (!fine.contains(a, p) || !fine.contains(a, p2)) continue;
+            double v = fine(a, static_cast<int>(p[0]), static_cast<int>(p[1]), static_cast<int>(p[2]));
+            if (halves) v += fine(a, static_cast<int>(p2[0]), static_cast<int>(p2[1]), static_cast<int>(p2[2]));
+            t(a, i, j, k) = v;
+          }
+    }
+  }
 }
 
 }  // namespace
@@ -245,24 +336,26 @@ void import_magnetic_field(Context& ctx, const HandOffState& st) {
     throw RunError("HandOff: the data's magnetic field is imported through the poloidal flux function from the axis: "
                    "the 2D grid must start at the axis (Grid::xmin = " + std::to_string(xmin[0]) + ", " + std::to_string(xmin[1]) + ")");
   std::unique_ptr<FluxQuadrature> q;
-  if (data)
+  std::unique_ptr<EdgeBuilder> builder;
+  std::vector<BlockKey> leaves;
+  if (data) {
     q = std::make_unique<FluxQuadrature>(*st.source, t.coordinates, t.averages_over_phi(),
                                          static_cast<int>(ctx.param<std::int64_t>("HandOff", "phi_samples")));
+    builder = std::make_unique<EdgeBuilder>(EdgeBuilder{*q, t.coordinates, t.averages_over_phi(), closure});
+    for (std::size_t d = 0; d < 3; ++d) builder->xmin[d] = xmin[d], builder->xmax[d] = xmax[d];
+    builder->m = t.coordinates == CoordinateSystem::cylindrical ? 0 : 1;
+    leaves = ctx.grid().all_blocks();
+  }
   for (Block* b : ctx.grid().local_blocks()) {
     const std::array<Field, 3> faces{b->field(groups.bface[0], 0), b->field(groups.bface[1], 0), b->field(groups.bface[2], 0)};
     if (!data) {
       for (int g : groups.bface) std::fill(b->data(g), b->data(g) + b->size(g), 0.0);
     } else {
-      LevelFaces F;
-      for (std::size_t d = 0; d < 3; ++d) F.domain_lo[d] = xmin[d], F.dx[d] = b->dx[d];
-      if (t.averages_over_phi()) {
-        F.domain_lo[2] = b->face_coordinate(2, 0);
-        const int m = t.coordinates == CoordinateSystem::cylindrical ? 0 : 1;
-        const auto cells = static_cast<std::int64_t>(std::llround((xmax[static_cast<std::size_t>(m)] - xmin[static_cast<std::size_t>(m)]) / b->dx[static_cast<std::size_t>(m)]));
-        axisymmetric_block(*b, *q, F, cells, closure, faces);
-      } else {
-        cartesian_block(*b, *q, F, faces);
-      }
+      const Frame fb = builder->frame(*b, BlockKey{b->level, b->index});
+      EdgeTable edges = builder->edges(fb);
+      match_finer_leaves(*b, fb, *builder, leaves, edges);
+      hydrobase::set_faces_from_edges(*b, hydrobase::EdgeIntegrals(*b, table_potential(*b, edges), 1), faces);
+      if (t.averages_over_phi()) toroidal_faces(*b, *q, faces);
     }
     hydrobase::cell_centred_field(groups, *b);
   }
