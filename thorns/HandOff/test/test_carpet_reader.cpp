@@ -82,9 +82,9 @@ TEST(CarpetReader, CanonicalNames) {
   EXPECT_EQ(reflection_parity("betay", 1), -1.0);
   EXPECT_EQ(reflection_parity("vel[2]", 2), -1.0);
   EXPECT_EQ(reflection_parity("rho", 2), 1.0);
-  EXPECT_EQ(reflection_parity("Bvec[2]", 2), -1.0);  // the Einstein Toolkit's Bvec: as vel
+  EXPECT_EQ(reflection_parity("Bvec[2]", 2), -1.0);  // HandOff::magnetic_parity = vector: as vel
   EXPECT_EQ(reflection_parity("Bvec[0]", 2), 1.0);
-  EXPECT_EQ(reflection_parity("Bvec[2]", 2, true), 1.0);  // axial: normal component even
+  EXPECT_EQ(reflection_parity("Bvec[2]", 2, true), 1.0);  // the Einstein Toolkit's Bvec (pseudo-vector): normal even
   EXPECT_EQ(reflection_parity("Bvec[0]", 2, true), -1.0);
   EXPECT_EQ(reflection_parity("vel[2]", 2, true), -1.0);
 }
