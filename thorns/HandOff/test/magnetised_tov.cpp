@@ -162,6 +162,7 @@ double interface_flux_mismatch(Context& ctx) {
       const Field F = b->field(g[d], 0);
       for_interior(*b, [&](int i, int j, int k) { largest = std::max(largest, std::abs(F(i, j, k) * b->face_area(d, i, j, k))); });
     }
+  MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   for (Block* c : blocks)
     for (Block* f : blocks) {
       if (f->level != c->level + 1) continue;
@@ -203,6 +204,7 @@ double interface_flux_mismatch(Context& ctx) {
         }
       }
     }
+  MPI_Allreduce(MPI_IN_PLACE, &mismatch, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
   return largest > 0 ? mismatch / largest : 0.0;
 }
 

@@ -78,8 +78,9 @@ Result hand_off(const MagnetisedTov& data, const std::vector<std::string>& overr
 // The field the data do not have: max |Bface| on the faces of cells centred beyond radius 9.
 double field_outside(Context& ctx);
 
-// Where a block meets a block one level finer (both on this rank): max |coarse face flux - sum of
-// the fine face fluxes on it| / max |face flux| over all faces (0 on an unrefined grid).
+// Where a block meets a block one level finer (pairs on one rank; not across periodic faces):
+// max |coarse face flux - sum of the fine face fluxes on it| / max |face flux| over all faces (0 on
+// an unrefined grid). Collective.
 double interface_flux_mismatch(Context& ctx);
 
 std::vector<std::string> with(std::vector<std::string> v, const std::vector<std::string>& more);
