@@ -10,11 +10,9 @@
 //   cross keep exactly their quadrature (z, resp. r, faces); the others follow from Psi. B^phi is
 //   the phi-averaged field averaged over each phi face directly (an unused direction: no
 //   divergence).
-// - 3D Cartesian: A in the axial gauge A_z = 0 on the grid's edges: A_x and A_y integrated upwards
-//   from the grid's lower z face by the fluxes through the x and y faces, A_y on that face from the
-//   fluxes through its z faces (x from the grid's lower x face). The x and y faces and the lowest z
-//   faces keep their quadrature fluxes; the other z faces follow (the 3D data's own divergence ends
-//   there).
+// - 3D (Cartesian, cylindrical, spherical): A in an axial gauge (A_z = 0, resp. A_r = 0) from the
+//   fluxes through the grid's faces, summed from the grid's lower faces (potential_edges.hpp); on
+//   refined grids the levels' edges are matched (coarse = sum of the fine ones).
 // Fluxes are Gauss-Legendre quadratures (3 x 3 points per face) of the interpolated Bt in the
 // grid's coordinates; sums run from the grid's lower boundary in a fixed order, so blocks that share
 // a face compute the same value. Faces outside the data get zero flux.
@@ -24,7 +22,7 @@
 namespace remnant::handoff {
 
 // Writes Bface1..3 on the interior faces of every local block (and Bvec from them with the metric's
-// psi); throws RunError for targets it cannot fill (a 2D grid without its axis, 3D curvilinear).
+// psi); throws RunError for targets it cannot fill (a 2D grid without its axis).
 void import_magnetic_field(Context& ctx, const HandOffState& st);
 
 // The grid's magnetic energy (1/2) int psi^6 B^2 sqrt(f) d^3x from the faces with psi^4 =

@@ -62,7 +62,7 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
     o.required = {"rho"};
     o.reflection = mirrors;
     o.buffer_zones = static_cast<int>(ctx.param<std::int64_t>("HandOff", "buffer_zones"));
-    o.axial_magnetic_field = parity == "axial_vector";
+    o.axial_magnetic_field = parity != "vector";  // auto: the Einstein Toolkit's Bvec is a pseudo-vector
     *src = read_carpet(o);
   } else {
     *src = read_remnant_volume(files, mirrors, parity != "vector");

@@ -38,6 +38,34 @@ Stencil1D stencil(double t) {
   return s;
 }
 
+double minmod(double a, double b) { return a * b <= 0 ? 0.0 : (a > 0 ? std::min(a, b) : std::max(a, b)); }
+
+// How far a smooth function may exceed the range of the 8 nearest points: per direction, the
+// minmod of the second differences at the two inner nodes of the cubic stencil (on the lines
+// through the nearest points) over 8 is the excess of a parabola between two nodes; the sum over
+// the directions is doubled for rounding. A jump makes neighbouring second differences change
+// sign: no excess, the trilinear value stays.
+double smooth_overshoot(const SourceLevel& L, const double* a, const Stencil1D (&s)[3]) {
+  double m = 0;
+  for (int d = 0; d < 3; ++d) {
+    if (s[d].count != 4) continue;
+    const int e1 = d == 0 ? 1 : 0, e2 = d == 2 ? 1 : 2;
+    double worst = 0;
+    for (int q = 0; q < s[e2].lin_count; ++q)
+      for (int p = 0; p < s[e1].lin_count; ++p) {
+        double v[4];
+        for (int n = 0; n < 4; ++n) {
+          int idx[3];
+          idx[d] = s[d].first + n, idx[e1] = s[e1].lin_first + p, idx[e2] = s[e2].lin_first + q;
+          v[n] = a[L.index(idx[0], idx[1], idx[2])];
+        }
+        worst = std::max(worst, std::abs(minmod(v[0] - 2 * v[1] + v[2], v[1] - 2 * v[2] + v[3])));
+      }
+    m += worst / 8;
+  }
+  return 2 * m;
+}
+
 }  // namespace
 
 Sampler::Sampler(const SourceData& src, const std::vector<std::string>& fields) : src_(src), nfields_(fields.size()) {
@@ -110,7 +138,15 @@ bool Sampler::sample_level(const SourceLevel& L, const std::vector<const double*
           for (int i = 0; i < s[0].count; ++i) row += s[0].w[i] * a[L.index(s[0].first + i, s[1].first + j, s[2].first + k)];
           c += s[1].w[j] * s[2].w[k] * row;
         }
-      if (c >= lo && c <= hi) value = c;
+      if (c >= lo && c <= hi) {
+        value = c;
+      } else {
+        // A smooth extremum between the points may exceed their range (a star's centre), but not
+        // change the sign they share (a surface: no negative density from an undershoot).
+        const double m = smooth_overshoot(L, a, s);
+        const double below = lo >= 0 ? std::max(lo - m, 0.0) : lo - m, above = hi <= 0 ? std::min(hi + m, 0.0) : hi + m;
+        if (c >= below && c <= above) value = c;
+      }
     }
     out[v] = value;
   }

@@ -82,9 +82,9 @@ TEST(CarpetReader, CanonicalNames) {
   EXPECT_EQ(reflection_parity("betay", 1), -1.0);
   EXPECT_EQ(reflection_parity("vel[2]", 2), -1.0);
   EXPECT_EQ(reflection_parity("rho", 2), 1.0);
-  EXPECT_EQ(reflection_parity("Bvec[2]", 2), -1.0);  // the Einstein Toolkit's Bvec: as vel
+  EXPECT_EQ(reflection_parity("Bvec[2]", 2), -1.0);  // HandOff::magnetic_parity = vector: as vel
   EXPECT_EQ(reflection_parity("Bvec[0]", 2), 1.0);
-  EXPECT_EQ(reflection_parity("Bvec[2]", 2, true), 1.0);  // axial: normal component even
+  EXPECT_EQ(reflection_parity("Bvec[2]", 2, true), 1.0);  // the Einstein Toolkit's Bvec (pseudo-vector): normal even
   EXPECT_EQ(reflection_parity("Bvec[0]", 2, true), -1.0);
   EXPECT_EQ(reflection_parity("vel[2]", 2, true), -1.0);
 }
@@ -188,6 +188,37 @@ TEST(CarpetReader, LimiterAtAJump) {
     ASSERT_TRUE(s.sample({x, 1.1, 2.2}, &v));
     EXPECT_GE(v, 1e-6 - 1e-15) << x;
     EXPECT_LE(v, 1.0 + 1e-15) << x;
+  }
+}
+
+TEST(CarpetReader, LimiterKeepsASmoothMaximumBetweenThePoints) {
+  // A smooth maximum (a star's centre) between the points of a cell-centred grid: the cubic value
+  // exceeds the 8 nearest points and is kept (clipped to their range it fell short by 3 a h^2 / 4);
+  // a positive field stays positive at a kink to zero (a star's surface).
+  synthetic::SyntheticCarpet spec;
+  spec.variables = {"HYDROBASE::rho"};
+  spec.reflection = {false, false, false};
+  spec.levels = {{0.5, {-3.75, -3.75, -3.75}, {16, 16, 16}, 0}};
+  const auto dir = std::filesystem::temp_directory_path() / ("handoff_max_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  CarpetOptions o;
+  auto rho = [](double x, double y, double z) { return std::max(1.0 - 0.05 * (x * x + y * y + z * z), 0.0); };
+  o.files = synthetic::write_synthetic_carpet(dir.string(), spec, [&](const std::string&, int, double x, double y, double z) {
+    return rho(x, y, z);
+  });
+  o.variables = {"rho"};
+  o.reflection_from_file = false;
+  const SourceData src = read_carpet(o);
+  std::filesystem::remove_all(dir);
+  const Sampler s(src, {"rho"});
+  double v = 0;
+  ASSERT_TRUE(s.sample({0.0, 0.0, 0.0}, &v));
+  EXPECT_NEAR(v, 1.0, 1e-12);  // the quadratic is reproduced by the cubic
+  ASSERT_TRUE(s.sample({0.1, -0.05, 0.02}, &v));
+  EXPECT_NEAR(v, rho(0.1, -0.05, 0.02), 1e-12);
+  for (double x = 3.0; x < 3.75; x += 0.01) {  // across the surface at r = sqrt(20) = 4.47 on the diagonal-ish line
+    ASSERT_TRUE(s.sample({x, 1.3, 1.7}, &v));
+    EXPECT_GE(v, 0.0) << x;
   }
 }
 

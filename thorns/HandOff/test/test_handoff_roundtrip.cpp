@@ -101,7 +101,7 @@ TEST(HandOffRoundTrip, RotatingStar3DToCylindrical2D) {
   const auto dir = std::filesystem::temp_directory_path() / ("handoff_rns_" + std::to_string(pid));
   const RunResult id2d = run("rns_uniform_cyl_2d.yaml", {"Flesh::out_dir=" + (dir / "id2d").string(), "RotatingStar::axis_ratio=0.8",
                                                          "XCFC::solve_every=1"}, false);
-  double rho[2], m0[2], j[2];
+  double rho[2], m0[2], j[2], j3d[2];
   for (int r = 0; r < 2; ++r) {
     const std::string cells = r == 0 ? "[32,32,16]" : "[64,64,32]";
     const auto out3d = dir / ("3d_" + std::to_string(r));
@@ -114,6 +114,7 @@ TEST(HandOffRoundTrip, RotatingStar3DToCylindrical2D) {
     rho[r] = b.first.rho_c;
     m0[r] = b.report.after.rest_mass;
     j[r] = b.angular_momentum;
+    j3d[r] = b.report.source_grid.angular_momentum;
     EXPECT_NEAR(b.report.imported.rest_mass / b.report.source_grid.rest_mass, 1.0, 1e-13);
   }
   // The finer 3D data to 2D spherical (r, theta; equatorial mirror): the same M0 and J.
@@ -133,11 +134,20 @@ TEST(HandOffRoundTrip, RotatingStar3DToCylindrical2D) {
               "M0 %.8f %.8f (%.2e %.2e), J %.8f %.8f (%.2e %.2e; 2D model %.8f)\n",
               rho2d, m02d, rho[0], rho[1], rho[0] / rho2d - 1, rho[1] / rho2d - 1, m0[0], m0[1], m0[0] / m02d - 1, m0[1] / m02d - 1,
               j[0], j[1], j[0] / j2d - 1, j[1] / j2d - 1, j2d);
-  EXPECT_LT(std::abs(rho[1] / rho2d - 1), std::abs(rho[0] / rho2d - 1) / 3);  // converges with the 3D spacing
-  EXPECT_NEAR(rho[1] / rho2d, 1.0, 1.5e-2);
+  // The centre's smooth maximum lies between the 3D points: the interpolation may exceed them
+  // (Sampler's curvature bound); clipped to their range, rho_c was -4.1e-2, -8.7e-3.
+  EXPECT_LT(std::abs(rho[1] / rho2d - 1), std::abs(rho[0] / rho2d - 1) / 4);  // converges with the 3D spacing
+  EXPECT_NEAR(rho[0] / rho2d, 1.0, 1e-2);
+  EXPECT_NEAR(rho[1] / rho2d, 1.0, 1e-3);
   EXPECT_NEAR(m0[1] / m02d, 1.0, 5e-4);
   EXPECT_LT(std::abs(j[1] / j2d - 1), std::abs(j[0] / j2d - 1) / 2);
   EXPECT_NEAR(j[1] / j2d, 1.0, 1.5e-3);
+  // J: the hand-off's own error (vs the 3D data on the grid) converges (the velocity's jump at the
+  // surface): +3.3e-3, +1.0e-3.
+  const double order_j = std::log2((j[0] / j3d[0] - 1) / (j[1] / j3d[1] - 1));
+  std::printf("rotating round trip: J imported / 3D data on the grid - 1: %.2e -> %.2e (order %.2f); 3D data / 2D model - 1: %.2e, %.2e\n",
+              j[0] / j3d[0] - 1, j[1] / j3d[1] - 1, order_j, j3d[0] / j2d - 1, j3d[1] / j2d - 1);
+  EXPECT_GT(order_j, 1.4);
   std::printf("rotating round trip to 2D spherical: rho_c %.6e (%.2e), M0 %.8f (%.2e), J %.8f (%.2e)\n", sph.first.rho_c,
               sph.first.rho_c / rho2d - 1, sph.report.after.rest_mass, sph.report.after.rest_mass / m02d - 1,
               sph.report.after.angular_momentum, sph.report.after.angular_momentum / j2d - 1);

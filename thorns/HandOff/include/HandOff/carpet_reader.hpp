@@ -23,7 +23,7 @@ struct CarpetOptions {
   std::array<bool, 3> reflection{false, false, false};  // mirror planes given by the user
   bool reflection_from_file = true;         // also read ReflectionSymmetry::reflection_* from the files
   int buffer_zones = 0;                     // extra points removed at refined levels' outer faces
-  bool axial_magnetic_field = false;        // Bvec unfolded as an axial vector (default: as vel)
+  bool axial_magnetic_field = true;         // Bvec unfolded as an axial vector (false: as vel)
 };
 
 // The canonical name of a Carpet variable ("HYDROBASE::vel[1]" -> "vel[1]", "HYDROBASE::Y_e" ->

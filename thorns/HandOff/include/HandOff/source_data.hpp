@@ -45,9 +45,9 @@ struct SourceData {
 };
 
 // Parity of a Cartesian component under the reflection x^d -> -x^d, from the variable's name:
-// vel[i], beta<i> are vectors; Bvec[i] a vector (the Einstein Toolkit's HydroBase convention) or,
-// with axial_magnetic_field, an axial vector (Remnant's: the component normal to the mirror even,
-// the others odd); g<ij> a tensor; anything else a scalar.
+// vel[i], beta<i> are vectors; Bvec[i] a vector or, with axial_magnetic_field, an axial vector
+// (the component normal to the mirror even, the others odd: the Einstein Toolkit's HydroBase::Bvec,
+// tagged tensorparity = -1, and Remnant's); g<ij> a tensor; anything else a scalar.
 double reflection_parity(const std::string& variable, int direction, bool axial_magnetic_field = false);
 
 }  // namespace remnant::handoff
