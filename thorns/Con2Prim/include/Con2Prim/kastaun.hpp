@@ -62,15 +62,17 @@ class KastaunSolver {
     const double rb2 = rbar2(mu, chi);
     const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
     const double v2 = std::min(mu * mu * rb2, v0sq_);
-    const double W = 1 / std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);
-    const double rho0 = D_ / W;
+    const double inv_W = std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);  // products, not quotients,
+    const double W = 1 / inv_W;                                             // on the chain to the EOS
+    const double rho0 = D_ * inv_W;
     const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
     // eps clamped to [eps_low(rho, Ye), eps_high(rho, Ye)] and T from eps, guessed from the last call.
     const auto t = thermo_.evaluate(W, rho0, eps0, e);
     const double a = t.press / (t.rho * (1 + e.eps));
-    const double nuA = (1 + a) * (1 + e.eps) / W;
+    const double nuA = (1 + a) * (1 + e.eps) * inv_W;
     const double nuB = (1 + a) * (1 + qbar - mu * rb2);
     e.f = mu - 1 / (std::max(nuA, nuB) + mu * rb2);
+    thermo_.rate_last(e.f);
     return e;
   }
 
