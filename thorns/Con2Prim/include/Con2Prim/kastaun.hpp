@@ -80,6 +80,11 @@ class KastaunSolver {
   // bracket (0, mu_+], with a round-off margin above mu_+ (f(mu_+) >= 0 in exact arithmetic).
   // False when f does not change sign on it.
   bool bracket(Eval& lo, Eval& hi, RootSolution& out) {
+    upper_end(hi, out);
+    lo = (*this)(0.0);
+    return hi.f >= 0 && lo.f <= 0;
+  }
+  void upper_end(Eval& hi, RootSolution& out) {
     const double mu_max = 1 / h_min_;
     RootStats aux_stats;
     const double mu_plus = newton_bracketed([&](double mu, double& f, double& df) { aux(mu, f, df); }, 0.0,
@@ -87,8 +92,36 @@ class KastaunSolver {
     out.aux_iterations = aux_stats.iterations;
     hi = (*this)(std::min(mu_max, mu_plus * (1 + 1e-12)));
     if (hi.f < 0 && hi.x < mu_max) hi = (*this)(mu_max);
+  }
+
+  // The same bracket, narrowed for the root finder: f(mu) = mu - g(mu), and the fixed-point image
+  // g(mu_hi) = mu_hi - f(mu_hi) of the upper end lies below the root wherever g decreases (the usual
+  // case: f >= 0 there is checked, not assumed). Then it is the lower end, in place of mu = 0, and
+  // usually near the root; otherwise it is the new upper end and mu = 0 the lower one.
+  bool narrow_bracket(Eval& lo, Eval& hi, RootSolution& out) {
+    upper_end(hi, out);
+    if (!(hi.f >= 0)) return false;
+    const double mu1 = hi.x - hi.f;
+    if (mu1 > 0 && mu1 < hi.x) {
+      const Eval m = (*this)(mu1);
+      if (m.f <= 0) return lo = m, true;
+      if (m.f > 0) {
+        // g increases here: the secant through both points, stepped a little beyond, for the lower end.
+        const Eval h0 = hi;
+        hi = m;
+        if (m.f < h0.f) {
+          const double step = m.f * (h0.x - m.x) / (h0.f - m.f);
+          const double mu2 = m.x - 1.25 * step;
+          if (mu2 > 0 && mu2 < m.x) {
+            const Eval m2 = (*this)(mu2);
+            if (m2.f <= 0) return lo = m2, true;
+            if (m2.f > 0) hi = m2;
+          }
+        }
+      }
+    }
     lo = (*this)(0.0);
-    return hi.f >= 0 && lo.f <= 0;
+    return lo.f <= 0;
   }
 
   // The solution at a root (with the far end of its final bracket, for the secant polish).
@@ -108,7 +141,7 @@ class KastaunSolver {
     RootSolution out;
     Eval lo, hi;
     // (iv) Brent on the bracket.
-    if (!bracket(lo, hi, out)) {
+    if (!narrow_bracket(lo, hi, out)) {
       out.bracketed = out.converged = false;
       out.evaluations = thermo_.evaluations();
       return out;
@@ -120,7 +153,7 @@ class KastaunSolver {
       // cold eps grows fast with rho (LS220 above ~5e15 g/cm^3): prefer an unclamped root below it.
       Eval root2, far2;
       RootStats st2;
-      if (unclamped_root_below(lo, root.x, s, st2, root2, far2)) {
+      if (unclamped_root_below(lo.x == 0 ? lo : (*this)(0.0), root.x, s, st2, root2, far2)) {
         root = root2, far = far2;
         st.converged = st2.converged;
         st.iterations += st2.iterations;
