@@ -87,8 +87,11 @@ class KastaunSolver {
   void upper_end(Eval& hi, RootSolution& out) {
     const double mu_max = 1 / h_min_;
     RootStats aux_stats;
+    // Start at 1/sqrt(h_min^2 + r^2): the root without a field, and a lower bound of mu_+ with one
+    // (r_bar^2 <= r^2 since it falls with mu from r^2 at mu = 0).
+    const double mu_0 = 1 / std::sqrt(h_min_ * h_min_ + r2_);
     const double mu_plus = newton_bracketed([&](double mu, double& f, double& df) { aux(mu, f, df); }, 0.0,
-                                            mu_max, 1e-14, 60, aux_stats);
+                                            mu_max, 1e-14, 60, aux_stats, mu_0);
     out.aux_iterations = aux_stats.iterations;
     hi = (*this)(std::min(mu_max, mu_plus * (1 + 1e-12)));
     if (hi.f < 0 && hi.x < mu_max) hi = (*this)(mu_max);
