@@ -13,6 +13,7 @@
 #include "Con2Prim/root_solution.hpp"
 #include "Con2Prim/settings.hpp"
 #include "Con2Prim/state.hpp"
+#include "EOS/tabulated_at_ye.hpp"
 #include "EOS/types.hpp"
 
 namespace remnant::con2prim {
@@ -62,14 +63,15 @@ class KastaunSolver {
     const double rb2 = rbar2(mu, chi);
     const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
     const double v2 = std::min(mu * mu * rb2, v0sq_);
-    const double inv_W = std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);  // products, not quotients,
-    const double W = 1 / inv_W;                                             // on the chain to the EOS
-    const double rho0 = D_ * inv_W;
+    const double inv_W = std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);
+    const double W = 1 / inv_W;
+    // Tables: products, not quotients, on the chain to the EOS (analytic EOS keep their bits).
+    const double rho0 = kTabulated ? D_ * inv_W : D_ / W;
     const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
     // eps clamped to [eps_low(rho, Ye), eps_high(rho, Ye)] and T from eps, guessed from the last call.
     const auto t = thermo_.evaluate(W, rho0, eps0, e);
     const double a = t.press / (t.rho * (1 + e.eps));
-    const double nuA = (1 + a) * (1 + e.eps) * inv_W;
+    const double nuA = kTabulated ? (1 + a) * (1 + e.eps) * inv_W : (1 + a) * (1 + e.eps) / W;
     const double nuB = (1 + a) * (1 + qbar - mu * rb2);
     e.f = mu - 1 / (std::max(nuA, nuB) + mu * rb2);
     thermo_.rate_last(e.f);
@@ -89,7 +91,7 @@ class KastaunSolver {
     RootStats aux_stats;
     // Start at 1/sqrt(h_min^2 + r^2): the root without a field, and a lower bound of mu_+ with one
     // (r_bar^2 <= r^2 since it falls with mu from r^2 at mu = 0).
-    const double mu_0 = 1 / std::sqrt(h_min_ * h_min_ + r2_);
+    const double mu_0 = kTabulated ? 1 / std::sqrt(h_min_ * h_min_ + r2_) : NAN;  // analytic: their bits
     const double mu_plus = newton_bracketed([&](double mu, double& f, double& df) { aux(mu, f, df); }, 0.0,
                                             mu_max, 1e-14, 60, aux_stats, mu_0);
     out.aux_iterations = aux_stats.iterations;
@@ -143,8 +145,9 @@ class KastaunSolver {
   RootSolution solve(const Settings& s) {
     RootSolution out;
     Eval lo, hi;
-    // (iv) Brent on the bracket.
-    if (!narrow_bracket(lo, hi, out)) {
+    // (iv) Brent on the bracket (narrowed for tables, where an evaluation costs a table search;
+    // analytic EOS keep the bits that the regression suites hold).
+    if (!(kTabulated ? narrow_bracket(lo, hi, out) : bracket(lo, hi, out))) {
       out.bracketed = out.converged = false;
       out.evaluations = thermo_.evaluations();
       return out;
@@ -196,6 +199,7 @@ class KastaunSolver {
   double v0_squared() const { return v0sq_; }
 
  private:
+  static constexpr bool kTabulated = eos::is_tabulated_v<E>;
   MasterEos<E> thermo_;
   double D_;
   double q_ = 0, r2_ = 0, Bc2_ = 0, rB_ = 0, rperp2_Bc2_ = 0, h_min_ = 1, v0sq_ = 0, one_minus_v0sq_ = 1;
