@@ -1,5 +1,6 @@
-// Time per recovery for a few typical states (Google Benchmark). The whole-plane figures and EOS
-// call counts come from remnant-c2p-bench; this tracks the kernel's speed in CI-sized runs.
+// Time per recovery (Google Benchmark): a few typical states, and the paper's rho-T plane of both
+// shared tables (issue 21: <= 0.6 us per recovery), whose counters give the table calls per
+// recovery. The other planes and the accuracy figures come from remnant-c2p-bench.
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
@@ -8,6 +9,7 @@
 #include "Atmosphere/atmosphere.hpp"
 #include "Con2Prim/recover.hpp"
 #include "Con2Prim/state_builder.hpp"
+#include "bench_planes.hpp"
 #include "EOS/ideal_gas.hpp"
 #include "EOS/readers.hpp"
 #include "EOS/tabulated.hpp"
@@ -47,7 +49,50 @@ void run(benchmark::State& st, const E& e, const Primitives& orig, Method m) {
   }
 }
 
+// The rho-T plane of remnant-c2p-bench's defaults (100 x 100, W = 2, b^2/2p = 1e-3, Ye = 0.1, B
+// antiparallel to v): one benchmark iteration is one recovery, cycling through the plane. Counters:
+// table_calls (per recovery, from one counted pass), iterations, and failures + silently wrong states.
+void rho_T_plane(benchmark::State& st, const std::shared_ptr<const eos::TableData>& t, Method m) {
+  const eos::Tabulated<> e(t);
+  const eos::Tabulated<eos::CountCalls> counted(t);
+  c2p_bench::Options o;
+  const c2p_bench::Plane plane = c2p_bench::rho_T_plane(e, o);
+  Settings s = o.settings;
+  s.method = m;
+  remnant::atmosphere::Atmosphere atm;
+  atm.rho_thr = o.rho_thr;
+  const auto res = c2p_bench::run_counted(counted, s, atm, plane);
+  const c2p_bench::Summary su = c2p_bench::summarise(res, s.accuracy);
+  const Metric3 g = Metric3::flat();
+  std::vector<Conserved> cons;
+  for (const auto& pt : plane.points) cons.push_back(prim_to_cons(pt.orig, g));
+  std::size_t i = 0;
+  for (auto _ : st) {
+    Conserved c = cons[i];
+    if (++i == cons.size()) i = 0;
+    Primitives p;
+    benchmark::DoNotOptimize(recover(e, s, atm, g, c, p));
+    benchmark::DoNotOptimize(p);
+  }
+  st.counters["table_calls"] = su.mean_eos_calls;
+  st.counters["iter"] = su.mean_iterations;
+  st.counters["bad"] = double(su.failures + su.silently_wrong + su.nan);
+  st.counters["max_eps_recov"] = su.max_eps_recov;
+}
+
+void register_planes() {
+  for (const char* name : {"SFHo_reduced_39r_39t_20y", "SRO_LS220_157r_89t_49y"}) {
+    const std::string path = std::string(REMNANT_SHARED_EOS_DIR) + "/" + name + ".h5";
+    if (!std::filesystem::exists(path)) continue;
+    const auto t = eos::load_table(path);
+    for (Method m : {Method::kastaun, Method::palenzuela})
+      benchmark::RegisterBenchmark((std::string("rhoT_plane/") + name + "/" + to_string(m)).c_str(),
+                                   [t, m](benchmark::State& st) { rho_T_plane(st, t, m); });
+  }
+}
+
 void register_all() {
+  register_planes();
   static std::shared_ptr<eos::Tabulated<>> table;
   static eos::IdealGas<> gas(5.0 / 3.0);
   if (std::filesystem::exists(kTable)) table = std::make_shared<eos::Tabulated<>>(eos::load_table(kTable));

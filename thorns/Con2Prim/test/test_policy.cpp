@@ -228,5 +228,5 @@ TEST_F(Policy, DiagnosticsCountRulesAndStatuses) {
   EXPECT_EQ(d.count(Status::not_converged), 1u);
   EXPECT_EQ(d.max_iterations, 300);
   EXPECT_EQ(d.eos_calls, 80u);
-  EXPECT_STREQ(rule_name(9), "10: W > W_max at rho <= 1e11 g/cm^3");
+  EXPECT_STREQ(rule_name(9), "10: W > W_max at rho <= W_max_rho_limit");
 }

@@ -92,3 +92,46 @@ TEST(Con2PrimRoots, AuxiliaryDerivativeAndBracket) {
     EXPECT_NEAR(ks(mu_true).f, 0, 1e-10 * mu_true);
   }
 }
+
+// The solver's bracket: f_a's root found from mu_0 = 1/sqrt(h_min^2 + r^2) (a lower bound of mu_+)
+// equals the one found from 1/h_min, in fewer Newton steps; the narrowed bracket (the fixed-point
+// image of the upper end, or a secant step beyond it) holds the root with f <= 0 <= f at its ends.
+TEST(Con2PrimRoots, NarrowedBracketHoldsTheRootAndTheAuxiliaryStartIsALowerBound) {
+  remnant::eos::IdealGas<> gas(2.0);
+  c2p_test::Randomiser R(4);
+  Settings s;
+  int steps_from_hi = 0, steps_from_mu0 = 0, narrowed = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Metric3 g = R.metric();
+    const Primitives p = make_state(gas, g, R.log_uniform(1e-10, 1e-2), R.log_uniform(0.01, 100), 0.3,
+                                    R.log_uniform(1, 1e3), k % 3 == 0 ? 0.0 : R.log_uniform(1e-4, 1e6), R.direction(),
+                                    R.direction());
+    const Conserved c = prim_to_cons(p, g);
+    KastaunSolver<remnant::eos::IdealGas<>> ks(gas, s, g, c, 0.3);
+    const double h_min = gas.bounds().h_min;
+    const Vec3 r_low{c.S[0] / c.D, c.S[1] / c.D, c.S[2] / c.D};
+    const double mu_0 = 1 / std::sqrt(h_min * h_min + dot(r_low, g.raise(r_low)));
+    double f0, df0;
+    ks.aux(mu_0, f0, df0);
+    EXPECT_LE(f0, 1e-14);  // a lower bound of mu_+
+    RootStats a, b;
+    auto fa = [&](double mu, double& f, double& df) { ks.aux(mu, f, df); };
+    const double from_hi = newton_bracketed(fa, 0.0, 1 / h_min, 1e-14, 60, a);
+    const double from_mu0 = newton_bracketed(fa, 0.0, 1 / h_min, 1e-14, 60, b, mu_0);
+    EXPECT_NEAR(from_mu0, from_hi, 1e-13 * from_hi);
+    steps_from_hi += a.iterations, steps_from_mu0 += b.iterations;
+    MasterEval lo, hi;
+    RootSolution out;
+    ASSERT_TRUE(ks.narrow_bracket(lo, hi, out));
+    EXPECT_LE(lo.f, 0);
+    EXPECT_GE(hi.f, 0);
+    const double mu_true = 1 / ((1 + p.eps + p.press / p.rho) * p.W);
+    EXPECT_GE(mu_true, lo.x * (1 - 1e-12));
+    EXPECT_LE(mu_true, hi.x * (1 + 1e-12));
+    narrowed += lo.x > 0;
+  }
+  std::printf("Newton steps for mu_+: %d from 1/h_min, %d from mu_0; %d of 300 brackets narrowed\n", steps_from_hi,
+              steps_from_mu0, narrowed);
+  EXPECT_LT(steps_from_mu0, steps_from_hi);
+  EXPECT_GT(narrowed, 200);
+}

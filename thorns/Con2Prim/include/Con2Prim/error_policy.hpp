@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 #include "Con2Prim/state.hpp"
 #include "EOS/types.hpp"
@@ -23,7 +25,7 @@ enum PolicyRule : std::uint32_t {
   kRuleYeAboveMax = 1u << 6,    // 7: Ye > Ye_max              -> Ye = Ye_max
   kRuleEpsBelowLow = 1u << 7,   // 8: eps <= eps(rho, T_min)   -> eps = eps_low, T = T_min (in eps -> T)
   kRuleEpsAboveHigh = 1u << 8,  // 9: eps >= eps(rho, T_max)   -> eps = eps_high, T = T_max (in eps -> T)
-  kRuleWAboveMax = 1u << 9,     // 10: W > W_max, rho <= 1e11 g/cm^3 -> W = W_max, rho = D / W_max
+  kRuleWAboveMax = 1u << 9,     // 10: W > W_max, rho <= rho_W_limit -> W = W_max, rho = D / W_max
 };
 inline constexpr int kNumRules = 10;
 inline constexpr std::uint32_t kFatalRules = kRuleRhoAboveMax | kRuleEpsAboveMax | kRuleTAboveMax;
@@ -34,14 +36,29 @@ inline const char* rule_name(int i) {
   static const char* const names[kNumRules] = {
       "1: rho > rho_max (fatal)", "2: eps < eps_min", "3: eps > eps_max (fatal)", "4: T < T_min",
       "5: T > T_max (fatal)",     "6: Ye < Ye_min",   "7: Ye > Ye_max",           "8: eps <= eps_low(rho, Ye)",
-      "9: eps >= eps_high(rho, Ye)", "10: W > W_max at rho <= 1e11 g/cm^3"};
+      "9: eps >= eps_high(rho, Ye)", "10: W > W_max at rho <= W_max_rho_limit"};
   return i >= 0 && i < kNumRules ? names[i] : "?";
 }
 
 struct PolicySettings {
   double W_max = 1e3;                                   // the paper gives no value
-  double rho_W_limit = 1e11 * units::rho_cgs_to_code;   // rule 10 applies only for rho <= this
+  // Rule 10 applies only for rho <= this, in code units (parameter Con2Prim::W_max_rho_limit); the
+  // default is the paper's 1e11 g/cm^3. Dimensionless problems (densities ~1) need their own value.
+  double rho_W_limit = 1e11 * units::rho_cgs_to_code;
 };
+
+// Why rule 10 can never fire with these settings, or "" where it can: it needs rho <= rho_W_limit, and
+// every cell that is not atmosphere has rho >= rho_thr (Atmosphere::rho_thr).
+inline std::string rule10_never_applies(const PolicySettings& s, double rho_thr) {
+  if (s.rho_W_limit >= rho_thr) return "";
+  char msg[320];
+  std::snprintf(msg, sizeof msg,
+                "Con2Prim::W_max_rho_limit = %g (code units, %g g/cm^3) is below Atmosphere::rho_thr = %g: "
+                "error-policy rule 10 (W > W_max = %g) can never apply; raise W_max_rho_limit (code units) "
+                "to the density below which W is to be capped",
+                s.rho_W_limit, s.rho_W_limit / units::rho_cgs_to_code, rho_thr, s.W_max);
+  return msg;
+}
 
 // Which thermodynamic variable of the input state is trusted.
 enum class ThermoInput {

@@ -13,6 +13,7 @@
 #include "Con2Prim/root_solution.hpp"
 #include "Con2Prim/settings.hpp"
 #include "Con2Prim/state.hpp"
+#include "EOS/tabulated_at_ye.hpp"
 #include "EOS/types.hpp"
 
 namespace remnant::con2prim {
@@ -62,15 +63,18 @@ class KastaunSolver {
     const double rb2 = rbar2(mu, chi);
     const double qbar = q_ - 0.5 * Bc2_ - 0.5 * mu * mu * chi * chi * rperp2_Bc2_;
     const double v2 = std::min(mu * mu * rb2, v0sq_);
-    const double W = 1 / std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);
-    const double rho0 = D_ / W;
+    const double inv_W = std::sqrt(v2 < v0sq_ ? 1 - v2 : one_minus_v0sq_);
+    const double W = 1 / inv_W;
+    // Tables: products, not quotients, on the chain to the EOS (analytic EOS keep their bits).
+    const double rho0 = kTabulated ? D_ * inv_W : D_ / W;
     const double eps0 = W * (qbar - mu * rb2) + v2 * W * W / (1 + W);
     // eps clamped to [eps_low(rho, Ye), eps_high(rho, Ye)] and T from eps, guessed from the last call.
     const auto t = thermo_.evaluate(W, rho0, eps0, e);
     const double a = t.press / (t.rho * (1 + e.eps));
-    const double nuA = (1 + a) * (1 + e.eps) / W;
+    const double nuA = kTabulated ? (1 + a) * (1 + e.eps) * inv_W : (1 + a) * (1 + e.eps) / W;
     const double nuB = (1 + a) * (1 + qbar - mu * rb2);
     e.f = mu - 1 / (std::max(nuA, nuB) + mu * rb2);
+    thermo_.rate_last(e.f);
     return e;
   }
 
@@ -78,15 +82,51 @@ class KastaunSolver {
   // bracket (0, mu_+], with a round-off margin above mu_+ (f(mu_+) >= 0 in exact arithmetic).
   // False when f does not change sign on it.
   bool bracket(Eval& lo, Eval& hi, RootSolution& out) {
+    upper_end(hi, out);
+    lo = (*this)(0.0);
+    return hi.f >= 0 && lo.f <= 0;
+  }
+  void upper_end(Eval& hi, RootSolution& out) {
     const double mu_max = 1 / h_min_;
     RootStats aux_stats;
+    // Start at 1/sqrt(h_min^2 + r^2): the root without a field, and a lower bound of mu_+ with one
+    // (r_bar^2 <= r^2 since it falls with mu from r^2 at mu = 0).
+    const double mu_0 = kTabulated ? 1 / std::sqrt(h_min_ * h_min_ + r2_) : NAN;  // analytic: their bits
     const double mu_plus = newton_bracketed([&](double mu, double& f, double& df) { aux(mu, f, df); }, 0.0,
-                                            mu_max, 1e-14, 60, aux_stats);
+                                            mu_max, 1e-14, 60, aux_stats, mu_0);
     out.aux_iterations = aux_stats.iterations;
     hi = (*this)(std::min(mu_max, mu_plus * (1 + 1e-12)));
     if (hi.f < 0 && hi.x < mu_max) hi = (*this)(mu_max);
+  }
+
+  // The same bracket, narrowed for the root finder: f(mu) = mu - g(mu), and the fixed-point image
+  // g(mu_hi) = mu_hi - f(mu_hi) of the upper end lies below the root wherever g decreases (the usual
+  // case: f >= 0 there is checked, not assumed). Then it is the lower end, in place of mu = 0, and
+  // usually near the root; otherwise it is the new upper end and mu = 0 the lower one.
+  bool narrow_bracket(Eval& lo, Eval& hi, RootSolution& out) {
+    upper_end(hi, out);
+    if (!(hi.f >= 0)) return false;
+    const double mu1 = hi.x - hi.f;
+    if (mu1 > 0 && mu1 < hi.x) {
+      const Eval m = (*this)(mu1);
+      if (m.f <= 0) return lo = m, true;
+      if (m.f > 0) {
+        // g increases here: the secant through both points, stepped a little beyond, for the lower end.
+        const Eval h0 = hi;
+        hi = m;
+        if (m.f < h0.f) {
+          const double step = m.f * (h0.x - m.x) / (h0.f - m.f);
+          const double mu2 = m.x - 1.25 * step;
+          if (mu2 > 0 && mu2 < m.x) {
+            const Eval m2 = (*this)(mu2);
+            if (m2.f <= 0) return lo = m2, true;
+            if (m2.f > 0) hi = m2;
+          }
+        }
+      }
+    }
     lo = (*this)(0.0);
-    return hi.f >= 0 && lo.f <= 0;
+    return lo.f <= 0;
   }
 
   // The solution at a root (with the far end of its final bracket, for the secant polish).
@@ -105,8 +145,9 @@ class KastaunSolver {
   RootSolution solve(const Settings& s) {
     RootSolution out;
     Eval lo, hi;
-    // (iv) Brent on the bracket.
-    if (!bracket(lo, hi, out)) {
+    // (iv) Brent on the bracket (narrowed for tables, where an evaluation costs a table search;
+    // analytic EOS keep the bits that the regression suites hold).
+    if (!(kTabulated ? narrow_bracket(lo, hi, out) : bracket(lo, hi, out))) {
       out.bracketed = out.converged = false;
       out.evaluations = thermo_.evaluations();
       return out;
@@ -118,7 +159,7 @@ class KastaunSolver {
       // cold eps grows fast with rho (LS220 above ~5e15 g/cm^3): prefer an unclamped root below it.
       Eval root2, far2;
       RootStats st2;
-      if (unclamped_root_below(lo, root.x, s, st2, root2, far2)) {
+      if (unclamped_root_below(lo.x == 0 ? lo : (*this)(0.0), root.x, s, st2, root2, far2)) {
         root = root2, far = far2;
         st.converged = st2.converged;
         st.iterations += st2.iterations;
@@ -158,6 +199,7 @@ class KastaunSolver {
   double v0_squared() const { return v0sq_; }
 
  private:
+  static constexpr bool kTabulated = eos::is_tabulated_v<E>;
   MasterEos<E> thermo_;
   double D_;
   double q_ = 0, r2_ = 0, Bc2_ = 0, rB_ = 0, rperp2_Bc2_ = 0, h_min_ = 1, v0sq_ = 0, one_minus_v0sq_ = 1;

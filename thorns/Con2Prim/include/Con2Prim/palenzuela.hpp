@@ -45,6 +45,7 @@ class PalenzuelaSolver {
     const auto th = thermo_.evaluate(W, rho0, eps0, e);
     const double h = 1 + e.eps + th.press / th.rho;
     e.f = x - h * W;
+    thermo_.rate_last(e.f);
     return e;
   }
 

@@ -90,10 +90,12 @@ Eval secant_polish(const Eval& b, const Eval& c) {
 }
 
 // Newton on an increasing function with a sign change on [lo, hi] (f(lo) < 0 <= f(hi)), starting at
-// hi; a step leaving the current bracket is replaced by bisection. fdf(x, f, df) fills f and f'.
+// `start` (default hi); a step leaving the current bracket is replaced by bisection. fdf(x, f, df)
+// fills f and f'.
 template <class FDF>
-double newton_bracketed(FDF&& fdf, double lo, double hi, double rel_tol, int max_iter, RootStats& st) {
-  double x = hi, f, df;
+double newton_bracketed(FDF&& fdf, double lo, double hi, double rel_tol, int max_iter, RootStats& st,
+                        double start = NAN) {
+  double x = start >= lo && start <= hi ? start : hi, f, df;
   for (int it = 1; it <= max_iter; ++it) {
     fdf(x, f, df);
     st.iterations = it;

@@ -23,6 +23,19 @@ struct Axis {
   double node(int i) const { return x0 + dx * i; }
 };
 
+// The cell of a uniform axis holding x: index i (0 .. n-2) and fraction f in [0, 1]; x outside the
+// axis maps to its nearest end (NaN to the first node).
+inline void locate(const Axis& a, double x, std::size_t& i, double& f) {
+  double s = (x - a.x0) * a.inv_dx;
+  if (!(s > 0)) s = 0;
+  const double top = a.n > 1 ? double(a.n - 1) : 0.0;
+  if (s > top) s = top;
+  std::size_t k = std::size_t(s);
+  if (a.n > 1 && k > std::size_t(a.n - 2)) k = a.n - 2;
+  i = k;
+  f = s - double(k);
+}
+
 enum ThermoField : int { kLogP = 0, kLogEps, kCs2, kEntropy, kMuE, kMuP, kMuN, kThermoFields };
 inline constexpr int kThermoStride = 8;
 enum CompoField : int { kXa = 0, kXh, kXn, kXp, kAbar, kZbar, kCompoFields };

@@ -175,16 +175,6 @@ class Tabulated {
     }
   };
 
-  static void locate(const Axis& a, double x, std::size_t& i, double& f) {
-    double s = (x - a.x0) * a.inv_dx;
-    if (!(s > 0)) s = 0;  // also maps NaN to the first node
-    const double top = a.n > 1 ? double(a.n - 1) : 0.0;
-    if (s > top) s = top;
-    std::size_t k = std::size_t(s);
-    if (a.n > 1 && k > std::size_t(a.n - 2)) k = a.n - 2;
-    i = k;
-    f = s - double(k);
-  }
   Stencil stencil(double rho, double T, double ye) const {
     std::size_t ir, it, iy;
     Stencil s;

@@ -1,0 +1,204 @@
+#pragma once
+// A tabulated EOS at one fixed Ye, for the primitive recovery: Ye is known before the master root
+// is sought, so its index and weight are found once per recovery. Each master-function evaluation
+// then needs T from eps at some rho and the pressure at that T; both come from one (rho, Ye) column:
+// ln(eps + shift) and ln(p + shift) of a grid point share one 64-byte record, so the T interval that
+// brackets eps gives p with the same weights (no second stencil, no ln T -> T -> ln T round trip).
+// The interval of the previous evaluation is tried first; where eps rises with T in the cell
+// (TableData::monotone_cell) a bracket there decides everything, rules 8/9 included.
+//
+// Results equal Tabulated::temperature(rho, eps, ye, T_guess, exact) followed by press(rho, T, ye)
+// to round-off, with the same flags (tests EOSTabulatedAtYe.*).
+//
+// Table calls counted (the unit of Tabulated's counter): one per read of a (rho, Ye)-column node or
+// of one interpolation cell, however many fields are taken from it.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "EOS/table.hpp"
+#include "EOS/tabulated.hpp"
+#include "EOS/types.hpp"
+
+namespace remnant::eos {
+
+template <class Tab>
+class TabulatedAtYe {
+ public:
+  struct Result {
+    double eps = 0;    // the eps used: the input, or eps_low / eps_high under rules 8/9
+    double press = 0;  // p(rho, T, Ye)
+    double T = 0;      // MeV under rules 8/9 (T_min, T_max exactly); 0 otherwise: T = exp(lnT)
+    double lnT = 0;    // ln T (the guess of the next call)
+    double temperature() const { return T > 0 ? T : std::exp(lnT); }
+    std::uint32_t flags = kInvOk;
+  };
+
+  TabulatedAtYe(const Tab& eos, double ye) : eos_(eos), t_(eos.table()) {
+    const int nr = t_.lrho.n, nt = t_.lT.n;
+    sr_ = nr > 1 ? kThermoStride : 0;
+    st_ = nt > 1 ? std::size_t(kThermoStride) * nr : 0;
+    sy_ = t_.ye.n > 1 ? std::size_t(kThermoStride) * nr * nt : 0;
+    std::size_t iy;
+    locate(t_.ye, ye, iy, fy_);
+    slice_ = t_.thermo.data() + iy * std::size_t(nt) * nr * kThermoStride;
+    cells_ = t_.monotone_cell.data() + iy * nr;
+    const Bounds& b = t_.bounds;
+    ye_flags_ = (ye >= b.ye_min && ye <= b.ye_max) ? kInvOk : kInvYeClamped;
+  }
+
+  // T from eps at rho (rules 8/9 as Tabulated::temperature), and p there.
+  //   lnT_guess: ln T of the previous call, Tabulated::temperature's T_guess (not finite: none); it
+  //              selects the root where eps is not monotonic in T (monotone_cell 0).
+  //   lnT_hint:  where the search starts in a monotone cell (not finite: none); the result there is
+  //              unique, so the hint changes only the cost.
+  Result invert(double rho, double eps, double lnT_guess, double lnT_hint) const {
+    Result r;
+    r.eps = eps;
+    const Bounds& b = t_.bounds;
+    r.flags = ye_flags_ | ((rho >= b.rho_min && rho <= b.rho_max) ? kInvOk : kInvRhoClamped);
+    std::size_t ir;
+    double fr;
+    locate(t_.lrho, std::log(rho), ir, fr);
+    const Column c{slice_ + ir * kThermoStride, sr_, sy_, st_, (1 - fy_) * (1 - fr), (1 - fy_) * fr, fy_ * (1 - fr), fy_ * fr};
+    const double arg = eps + t_.eps_shift;
+    const double target = arg > 0 ? std::log(arg) : -Bounds::inf;
+    if (cells_[ir]) return invert_monotone(c, target, interval(lnT_hint), r);
+    return invert_any(c, target, interval(lnT_guess), r);
+  }
+
+ private:
+  // Bilinear (rho, Ye) combination of the four columns at T node j, for one field.
+  struct Column {
+    const double* p;
+    std::size_t sr, sy, st;
+    double w00, w01, w10, w11;  // corner weights (1-fy)(1-fr), (1-fy)fr, fy(1-fr), fy fr
+    double node(int j, int field) const {
+      const double* q = p + j * st + field;
+      return w00 * q[0] + w01 * q[sr] + w10 * q[sy] + w11 * q[sy + sr];
+    }
+  };
+
+  // The T interval holding ln T (as Tabulated::temperature takes its guess), -1 for none.
+  int interval(double lnT) const {
+    const Axis& a = t_.lT;
+    if (!std::isfinite(lnT) || a.n < 2) return -1;
+    return int(std::clamp((lnT - a.x0) * a.inv_dx, 0.0, double(a.n - 2)));
+  }
+
+  // eps rises with T along the column: the interval j with E(j) <= target < E(j+1) is unique. From
+  // the hinted interval, hunt outwards (steps 1, 2, 4, ...) to a bracket, then bisect; the end nodes
+  // are read only when the hunt reaches them (rules 8/9: target <= E(0), target >= E(last)).
+  Result invert_monotone(const Column& c, double target, int j, Result& r) const {
+    const int last = t_.lT.n - 1;
+    int l = 0, h = last;
+    double fl, fh;
+    if (j >= 0) {
+      eos_.counter().add();  // one cell: E and p at both ends of the hinted interval
+      const double g0 = c.node(j, kLogEps), g1 = c.node(j + 1, kLogEps);
+      if (g0 < target && target < g1) return interior(c, j, g0, g1, target, r);
+      if (!(target > g0)) {  // below: hunt down for a node <= target
+        if (j == 0) return clamped(c, 0, g0, t_.bounds.T_min, kInvBelowEpsLow, r);
+        h = j, fh = g0;
+        for (int step = 1;; step *= 2) {
+          const int k = std::max(h - step, 0);
+          eos_.counter().add();
+          const double fk = c.node(k, kLogEps);
+          if (k == 0 && !(target > fk)) return clamped(c, 0, fk, t_.bounds.T_min, kInvBelowEpsLow, r);
+          if (fk <= target) {
+            l = k, fl = fk;
+            break;
+          }
+          h = k, fh = fk;
+        }
+      } else {  // at or above: hunt up for a node > target
+        if (j + 1 == last) return clamped(c, last, g1, t_.bounds.T_max, kInvAboveEpsHigh, r);
+        l = j + 1, fl = g1;
+        for (int step = 1;; step *= 2) {
+          const int k = std::min(l + step, last);
+          eos_.counter().add();
+          const double fk = c.node(k, kLogEps);
+          if (k == last && target >= fk) return clamped(c, last, fk, t_.bounds.T_max, kInvAboveEpsHigh, r);
+          if (fk > target) {
+            h = k, fh = fk;
+            break;
+          }
+          l = k, fl = fk;
+        }
+      }
+    } else {
+      eos_.counter().add(2);
+      fl = c.node(0, kLogEps), fh = c.node(last, kLogEps);
+      if (!(target > fl)) return clamped(c, 0, fl, t_.bounds.T_min, kInvBelowEpsLow, r);  // rule 8
+      if (target >= fh) return clamped(c, last, fh, t_.bounds.T_max, kInvAboveEpsHigh, r);  // rule 9
+    }
+    while (h - l > 1) {
+      const int mid = (l + h) / 2;
+      eos_.counter().add();
+      const double fm = c.node(mid, kLogEps);
+      if (fm <= target) l = mid, fl = fm;
+      else h = mid, fh = fm;
+    }
+    eos_.counter().add();  // p on the interval's cell
+    return interior(c, l, fl, fh, target, r);
+  }
+
+  // Any column (Tabulated::temperature's exact inversion): the end nodes for rules 8/9, then the
+  // bracketing interval nearest to the guess (without one, nearest T_min).
+  Result invert_any(const Column& c, double target, int jg, Result& r) const {
+    const int last = t_.lT.n - 1;
+    eos_.counter().add(2);
+    const double lo = c.node(0, kLogEps), hi = c.node(last, kLogEps);
+    if (!(target > lo)) return clamped(c, 0, lo, t_.bounds.T_min, kInvBelowEpsLow, r);  // rule 8 (and NaN)
+    if (target >= hi) return clamped(c, last, hi, t_.bounds.T_max, kInvAboveEpsHigh, r);  // rule 9
+    const int start = jg >= 0 ? jg : 0;
+    bool read = false;
+    for (int d = 0; d <= last; ++d)
+      for (int s : {start + d, start - d}) {
+        if (s < 0 || s >= last || (d == 0 && read)) continue;
+        eos_.counter().add(2);
+        read = true;
+        const double e0 = c.node(s, kLogEps), e1 = c.node(s + 1, kLogEps);
+        if ((e0 <= target && target <= e1) || (e1 <= target && target <= e0)) {
+          eos_.counter().add();  // p on the interval's cell
+          return interior(c, s, e0, e1, target, r);
+        }
+      }
+    return clamped(c, 0, lo, t_.bounds.T_min, kInvBelowEpsLow, r);  // unreachable: lo < target < hi
+  }
+
+  // Linear in ln T on [node j, node j+1] (as Tabulated's exact inversion), p with the same fraction.
+  Result interior(const Column& c, int j, double ej, double ej1, double target, Result& r) const {
+    const Axis& a = t_.lT;
+    const double f = ej1 != ej ? (target - ej) / (ej1 - ej) : 0.0;
+    r.lnT = a.node(j) + a.dx * f;  // T = exp(lnT) is left to the caller (needed at the root only)
+    const double lp = (1 - f) * c.node(j, kLogP) + f * c.node(j + 1, kLogP);
+    r.press = std::exp(lp) - t_.p_shift;
+    return r;
+  }
+  Result clamped(const Column& c, int j, double ej, double T, std::uint32_t flag, Result& r) const {
+    r.T = T;
+    r.lnT = std::log(T);
+    r.eps = std::exp(ej) - t_.eps_shift;
+    r.flags |= flag;
+    eos_.counter().add();  // p at the end node
+    r.press = std::exp(c.node(j, kLogP)) - t_.p_shift;
+    return r;
+  }
+
+  const Tab& eos_;
+  const TableData& t_;
+  const double* slice_ = nullptr;
+  const std::uint8_t* cells_ = nullptr;
+  std::size_t sr_ = 0, st_ = 0, sy_ = 0;
+  double fy_ = 0;
+  std::uint32_t ye_flags_ = kInvOk;
+};
+
+// True for the tabulated EOS types (those with a TabulatedAtYe).
+template <class E>
+inline constexpr bool is_tabulated_v = false;
+template <class C>
+inline constexpr bool is_tabulated_v<Tabulated<C>> = true;
+
+}  // namespace remnant::eos
