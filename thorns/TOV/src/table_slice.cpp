@@ -1,7 +1,7 @@
 #include "TOV/table_slice.hpp"
 
 #include <cmath>
-#include <cstdlib>
+#include <stdexcept>
 #include <vector>
 
 #include "EOS/beta_equilibrium.hpp"
@@ -37,7 +37,7 @@ class TableColdSlice final : public ColdSlice {
 std::unique_ptr<ColdSlice> cold_beta_slice(const eos::Tabulated<>& table, int points_per_interval) {
   const auto& b = table.bounds();
   const eos::Axis& a = table.table().lrho;
-  const double lo = std::log(b.rho_min), hi = std::log(b.rho_max);
+  if (a.n < 2) throw std::runtime_error(table.table().file + ": TOV needs a table with at least 2 densities");
   std::vector<double> rhos;
   std::vector<std::size_t> nodes;  // the segments between table nodes
   for (int i = 0; i + 1 < a.n; ++i) {
@@ -46,7 +46,6 @@ std::unique_ptr<ColdSlice> cold_beta_slice(const eos::Tabulated<>& table, int po
   }
   rhos.front() = b.rho_min;  // exp(log(x)) may round outside the table
   rhos.push_back(b.rho_max);
-  (void)lo, (void)hi;
   const eos::BetaSlice s = eos::beta_equilibrium_slice(table, b.T_min, rhos);
   return std::make_unique<TableColdSlice>(table, tabulated_slice_segments(s.rho, s.press, s.eps, s.ye, nodes));
 }
