@@ -3,6 +3,7 @@
 #include <gsl/gsl_interp.h>
 
 #include <cmath>
+#include <algorithm>
 #include <stdexcept>
 
 namespace remnant::tov {
@@ -51,37 +52,96 @@ class Monotone {
   gsl_interp_accel* a_;
 };
 
+// Integral over [a, b] of the quadratic through (x[k], f[k]), k = 0..2 (Newton form).
+double quadratic_integral(const double* x, const double* f, double a, double b) {
+  const double d01 = (f[1] - f[0]) / (x[1] - x[0]), d12 = (f[2] - f[1]) / (x[2] - x[1]);
+  const double d012 = (d12 - d01) / (x[2] - x[0]);
+  auto F = [&](double t) {
+    const double u = t - x[0];
+    return f[0] * u + d01 * u * u / 2 + d012 * (u * u * u / 3 - (x[1] - x[0]) * u * u / 2);
+  };
+  return F(b) - F(a);
+}
+
+// Points of a cold slice, split into segments inside which the EOS is smooth (the interpolated
+// table has kinks at its nodes): H = int dp / (e + p) by the trapezoidal rule (`order` 2) or by
+// quadratics that stay inside a segment (`order` 3); the inverse functions are interpolated
+// separately in each segment, so no interpolant straddles a kink. Only points of strictly
+// increasing H are kept.
 class TabulatedSlice final : public ColdSlice {
  public:
   TabulatedSlice(const std::vector<double>& rho, const std::vector<double>& p, const std::vector<double>& eps,
-                 const std::vector<double>& ye) {
-    // H by the trapezoidal rule in dp / (e + p); keep only strictly increasing H.
-    std::vector<double> H{0.0}, lr{std::log(rho[0])}, lp{std::log(p[0])}, e{eps[0]}, y{ye[0]};
+                 const std::vector<double>& ye, std::vector<std::size_t> starts, int order) {
+    starts.push_back(rho.size() - 1);
+    std::vector<double> w(rho.size());
+    for (std::size_t i = 0; i < rho.size(); ++i) w[i] = 1 / (rho[i] * (1 + eps[i]) + p[i]);
     double h = 0;
-    for (std::size_t i = 1; i < rho.size(); ++i) {
-      const double w0 = rho[i - 1] * (1 + eps[i - 1]) + p[i - 1], w1 = rho[i] * (1 + eps[i]) + p[i];
-      h += (p[i] - p[i - 1]) * 0.5 * (1 / w0 + 1 / w1);
-      if (!(h > H.back())) continue;
-      H.push_back(h);
-      lr.push_back(std::log(rho[i]));
-      lp.push_back(std::log(p[i]));
-      e.push_back(eps[i]);
-      y.push_back(ye[i]);
+    for (std::size_t s = 0; s + 1 < starts.size(); ++s) {
+      const std::size_t b = starts[s], e = starts[s + 1];  // the segment's points b..e (inclusive)
+      Segment seg;
+      for (std::size_t i = b; i <= e; ++i) {
+        if (i > b) {
+          double dh = (p[i] - p[i - 1]) * 0.5 * (w[i - 1] + w[i]);
+          if (order == 3 && e - b >= 2) {
+            const std::size_t k = std::min(i, e - 1);  // the stencil k-1, k, k+1 stays inside
+            const double x[3] = {p[k - 1], p[k], p[k + 1]}, f[3] = {w[k - 1], w[k], w[k + 1]};
+            if (x[0] < x[1] && x[1] < x[2]) dh = quadratic_integral(x, f, p[i - 1], p[i]);
+          }
+          h += dh;
+        }
+        const double last = !seg.H.empty() ? seg.H.back() : !all_.empty() ? all_.back().H.back() : -1.0;
+        const bool shared = i == b && !all_.empty() && h == last;  // kept as the previous segment's end
+        if (!(h > last) && !shared) continue;
+        seg.push(h, rho[i], p[i], eps[i], ye[i]);
+      }
+      if (seg.H.size() >= 2) all_.push_back(std::move(seg));
     }
-    if (H.size() < 4) throw std::runtime_error("TOV: the cold slice has fewer than 4 points of increasing enthalpy");
-    rho_of_H_ = std::make_unique<Monotone>(H, lr);
-    p_of_H_ = std::make_unique<Monotone>(H, lp);
-    eps_of_H_ = std::make_unique<Monotone>(H, e);
-    ye_of_H_ = std::make_unique<Monotone>(H, y);
-    H_of_lrho_ = std::make_unique<Monotone>(lr, H);
+    std::size_t n = 0;
+    for (const Segment& g : all_) n += g.H.size();
+    if (n < 4) throw std::runtime_error("TOV: the cold slice has fewer than 4 points of increasing enthalpy");
+    for (Segment& g : all_) g.build();
   }
   ColdState at(double H) const override {
-    return {std::exp((*rho_of_H_)(H)), (*eps_of_H_)(H), std::exp((*p_of_H_)(H)), (*ye_of_H_)(H)};
+    const Segment& g = find([&](const Segment& s) { return s.H.back(); }, H);
+    return {std::exp((*g.rho)(H)), (*g.eps)(H), std::exp((*g.p)(H)), (*g.ye)(H)};
   }
-  double log_enthalpy(double rho) const override { return (*H_of_lrho_)(std::log(rho)); }
+  double log_enthalpy(double rho) const override {
+    const double lr = std::log(rho);
+    const Segment& g = find([&](const Segment& s) { return s.lr.back(); }, lr);
+    return (*g.H_of_lrho)(lr);
+  }
 
  private:
-  std::unique_ptr<Monotone> rho_of_H_, p_of_H_, eps_of_H_, ye_of_H_, H_of_lrho_;
+  struct Segment {
+    std::vector<double> H, lr, lp, e, y;
+    std::unique_ptr<Monotone> rho, p, eps, ye, H_of_lrho;
+    void push(double h, double r, double pr, double ep, double yy) {
+      H.push_back(h);
+      lr.push_back(std::log(r));
+      lp.push_back(std::log(pr));
+      e.push_back(ep);
+      y.push_back(yy);
+    }
+    void build() {
+      rho = std::make_unique<Monotone>(H, lr);
+      p = std::make_unique<Monotone>(H, lp);
+      eps = std::make_unique<Monotone>(H, e);
+      ye = std::make_unique<Monotone>(H, y);
+      H_of_lrho = std::make_unique<Monotone>(lr, H);
+    }
+  };
+  // The first segment whose upper end reaches x (the last one beyond the top).
+  template <class Top>
+  const Segment& find(Top top, double x) const {
+    std::size_t lo = 0, hi = all_.size() - 1;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (top(all_[mid]) < x) lo = mid + 1;
+      else hi = mid;
+    }
+    return all_[lo];
+  }
+  std::vector<Segment> all_;
 };
 
 }  // namespace
@@ -92,7 +152,13 @@ std::unique_ptr<ColdSlice> polytrope_slice(double K, double Gamma, double ye) {
 
 std::unique_ptr<ColdSlice> tabulated_slice(std::vector<double> rho, std::vector<double> press, std::vector<double> eps,
                                            std::vector<double> ye) {
-  return std::make_unique<TabulatedSlice>(rho, press, eps, ye);
+  return std::make_unique<TabulatedSlice>(rho, press, eps, ye, std::vector<std::size_t>{0}, 2);
+}
+
+std::unique_ptr<ColdSlice> tabulated_slice_segments(const std::vector<double>& rho, const std::vector<double>& press,
+                                                    const std::vector<double>& eps, const std::vector<double>& ye,
+                                                    std::vector<std::size_t> segment_starts) {
+  return std::make_unique<TabulatedSlice>(rho, press, eps, ye, std::move(segment_starts), 3);
 }
 
 }  // namespace remnant::tov

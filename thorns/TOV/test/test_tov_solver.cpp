@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <vector>
 
 #include "TOV/tov_solver.hpp"
 
@@ -46,6 +48,35 @@ TEST(TovSolver, TabulatedSliceOfAPolytropeAgrees) {
   const TovStar a(*tab, 1.28e-3), b(*poly, 1.28e-3);
   EXPECT_NEAR(a.gravitational_mass(), b.gravitational_mass(), 2e-4);  // trapezoidal H(rho)
   EXPECT_NEAR(a.areal_radius(), b.areal_radius(), 1e-2);
+}
+
+}  // namespace
+
+namespace {
+
+// A polytrope sampled on n log-spaced densities, split into 5 segments at a point of a kink-free
+// EOS: H(rho) of the segmented slice (quadratics inside each segment) against the closed form.
+double segmented_enthalpy_error(int n) {
+  using namespace remnant::tov;
+  std::vector<double> rho, p, eps, ye;
+  std::vector<std::size_t> starts;
+  for (int i = 0; i <= n; ++i) {
+    if (i % (n / 5) == 0 && i < n) starts.push_back(rho.size());
+    const double r = 1e-8 * std::pow(1e6, double(i) / n);
+    rho.push_back(r), p.push_back(100 * r * r), eps.push_back(100 * r), ye.push_back(0.1);
+  }
+  const auto tab = tabulated_slice_segments(rho, p, eps, ye, starts);
+  const auto poly = polytrope_slice(100.0, 2.0, 0.1);
+  const double H0 = poly->log_enthalpy(1e-8);  // the slice starts at H = 0 there
+  double err = 0;
+  for (double r : {3e-6, 1e-4, 1e-3, 5e-3}) err = std::max(err, std::abs(tab->log_enthalpy(r) - (poly->log_enthalpy(r) - H0)));
+  return err;
+}
+
+TEST(TovSolver, SegmentedSliceIntegratesTheEnthalpyAtThirdOrder) {
+  const double e1 = segmented_enthalpy_error(100), e2 = segmented_enthalpy_error(200);
+  std::printf("segmented slice: |H - H_exact| %.3e %.3e (order %.2f)\n", e1, e2, std::log2(e1 / e2));
+  EXPECT_GT(std::log2(e1 / e2), 2.6);  // the trapezoidal rule is second order
 }
 
 }  // namespace

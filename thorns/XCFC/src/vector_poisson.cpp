@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace remnant::xcfc {
 
@@ -26,6 +27,12 @@ ScalarEquation cartesian_component_equation(const GridShape& s, int a) {
     eq.falloff = 2.0;  // exterior solution of Lap V - 2V/r^2 = 0: r^-2
   } else if (axisymmetric && a < 2) {
     eq.mode = AngularMode::axisymmetric_m1;
+    eq.falloff = 2.0;  // an m = 1 field has no monopole: its leading exterior term is l = 1, r^-2
+  } else if (s.coordinates != CoordinateSystem::cartesian || s.dimension == 3) {
+    // The monopole is split off (monopole_split below); the rest starts at l = 1. A rotating star's
+    // B^x, B^y are l = 1 (beta^phi -> 2J/r^3): held to r^-1 at the outer faces they took a rigid
+    // rotation (a homogeneous solution) of about J/R^3 in beta^phi that did not converge.
+    eq.falloff = 2.0;
   }
   // B is a vector in Cartesian components: its parity at each face is that of its declared tensor
   // type under the face's isometry (remnant/domain.hpp). On 3D grids the image across the axis or
@@ -171,6 +178,83 @@ CompositeField divergence(CompositeMultigrid& mg, const VectorField& up) {
   return div;
 }
 
+namespace {
+
+// A compact, smooth unit charge q = c (1 - r^2/R^2)^2 (r < R) centred at the Cartesian origin, and
+// its potential g (Lap g = q, g = -1/(4 pi r) outside).
+struct UnitCharge {
+  double R = 0, c = 0;
+  explicit UnitCharge(double radius) : R(radius), c(105 / (32 * std::numbers::pi * radius * radius * radius)) {}
+  double q(double r) const {
+    const double u = 1 - r * r / (R * R);
+    return r < R ? c * u * u : 0.0;
+  }
+  double g(double r) const {
+    if (r >= R) return -1 / (4 * std::numbers::pi * r);
+    const double x = r * r / (R * R);
+    return c * R * R * (x / 6 - x * x / 10 + x * x * x / 42 - 19.0 / 210) - 1 / (4 * std::numbers::pi * R);
+  }
+};
+
+// A Cartesian component with outer faces at r^-2 (cartesian_component_equation) whose source may
+// have a monopole (the total linear momentum, for X): the largest charge radius (half the distance
+// from the origin to the nearest outer face), or 0 when the component needs no split: an m = 1 or
+// l = 1 mode, odd at a mirror plane (its images cancel the monopole), a planar grid, or an origin
+// outside the domain.
+double monopole_radius(const GridShape& s, const ScalarEquation& eq) {
+  if (eq.mode != AngularMode::none || eq.falloff != 2.0) return 0;
+  const DomainFaces faces = s.faces();
+  double R = 1e300;
+  for (int d = 0; d < s.dimension; ++d)
+    for (int side = 0; side < 2; ++side) {
+      const Boundary b = faces.boundary[d][side];
+      const double x = side ? s.face(d, s.n[d]) : s.lo[d];
+      if (b == Boundary::reflect && eq.parity[d][side] < 0) return 0;
+      const bool radial = (s.coordinates == CoordinateSystem::spherical && d == 0) ||
+                          (s.coordinates == CoordinateSystem::cylindrical && d == 0);
+      if (!radial && s.coordinates != CoordinateSystem::spherical && !(d == 2 && s.coordinates == CoordinateSystem::cylindrical)) {
+        if (side == 0 && x > 0) return 0;  // the origin is not in the domain
+        if (side == 1 && x < 0) return 0;
+      }
+      if (s.coordinates == CoordinateSystem::spherical && d == 0 && side == 0 && x > 0) return 0;
+      if (b == Boundary::outflow) R = std::min(R, std::abs(x));
+    }
+  return R < 1e300 ? 0.5 * R : 0;
+}
+
+// The weight M of the unit charge that carries the source's monopole: the source's volume integral
+// over the leaf cells over the charge's (the factors of mirrored or unused directions cancel).
+double monopole_weight(const CompositeMultigrid& mg, const CompositeField& src, const UnitCharge& unit) {
+  double m = 0, q = 0;
+  for (int n = 0; n < mg.parts(); ++n) {
+    const GridShape& s = mg.part(n).shape;
+    for_part_cells(mg.part(n), [&](std::size_t c, std::size_t, int i, int j, int k) {
+      if (mg.covered(n, c)) return;
+      const std::array<int, 3> ijk{i, j, k};
+      double vol = 1;
+      for (int d = 0; d < s.dimension; ++d) vol *= coords::volume_factor_integral(s.coordinates, d, s.face(d, ijk[d]), s.face(d, ijk[d] + 1));
+      const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
+      m += src.part[static_cast<std::size_t>(n)][c] * vol;
+      q += unit.q(std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2])) * vol;
+    });
+  }
+  return q > 0 ? m / q : 0;
+}
+
+// f += w * fn(r) over every cell of every part (covered cells included: they hold restrictions).
+template <class Fn>
+void add_radial(const CompositeMultigrid& mg, CompositeField& f, double w, Fn&& fn) {
+  for (int n = 0; n < mg.parts(); ++n) {
+    const GridShape& s = mg.part(n).shape;
+    for_part_cells(mg.part(n), [&](std::size_t c, std::size_t, int i, int j, int k) {
+      const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
+      f.part[static_cast<std::size_t>(n)][c] += w * fn(std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
+    });
+  }
+}
+
+}  // namespace
+
 VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField& source_up, VectorPotentials& warm,
                                       VectorField& X_up, const SolveSettings& settings) {
   const GridShape& s = mg.base_shape();
@@ -187,7 +271,16 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
     CompositeEquation eq;
     eq.boundary = cartesian_component_equation(s, a);
     eq.s0 = src[a];
+    // The monopole goes into a unit charge's potential; the rest falls off at r^-2 (solved for B - M g).
+    const double radius = monopole_radius(s, eq.boundary);
+    const UnitCharge unit(radius > 0 ? radius : 1.0);
+    const double M = radius > 0 ? monopole_weight(mg, src[a], unit) : 0.0;
+    if (M != 0) {
+      add_radial(mg, eq.s0, -M, [&](double r) { return unit.q(r); });
+      add_radial(mg, warm.B[a], -M, [&](double r) { return unit.g(r); });
+    }
     stats.component[a] = mg.solve(eq, warm.B[a], settings);
+    if (M != 0) add_radial(mg, warm.B[a], M, [&](double r) { return unit.g(r); });
   }
   const VectorField B_up = to_coordinate(mg, warm.B);
   CompositeEquation chi;

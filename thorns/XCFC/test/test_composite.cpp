@@ -205,7 +205,7 @@ TEST(XCFCComposite, FullyRefinedLevelEqualsUniformSolve) {
     std::printf("fully refined %-15s composite error %.6e uniform error %.6e  max difference %.2e  V-cycles %d\n",
                 c.name.c_str(), comp.error, err, diff, comp.stats.cycles);
     EXPECT_TRUE(comp.stats.converged) << c.name;
-    EXPECT_LT(diff, 1e-8) << c.name;
+    EXPECT_LT(diff, 1e-10) << c.name;  // the README's claim; measured 1.3e-13 .. 5.5e-11
   }
 }
 

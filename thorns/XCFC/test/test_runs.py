@@ -18,9 +18,11 @@
                  steps) than with linear extrapolation; xcfc.tsv counts the updates; a 1 -> 2 rank
                  restart between solves with updates is bit-identical
   migration      parfiles/migration.yaml in 1D (the unstable-branch star, solved every step) for
-                 3.2 ms: rho_c falls below 0.1 rho_c(0), then oscillates with decreasing peaks about
-                 the stable-branch star of the same mass (rho_c = 1.346e-3, 0.168 rho_c(0)): the
-                 migration of the paper's test (the 2D run to 10 ms is a parfile, not a CI test)
+                 3.2 ms: rho_c falls to 0.042 rho_c(0) at 0.67 ms, then oscillates with decreasing peaks
+                 (0.430, 0.329, 0.269) about the stable-branch star of the same mass (rho_c = 1.346e-3,
+                 0.168 rho_c(0)): minimum, its time, the peaks, the last-ms mean and the rest-mass
+                 change are asserted in windows that hold the README's 2D run (the 2D run to 10 ms is
+                 a parfile, not a CI test)
   amr            composite (AMR) solves: a base of 320 cells refined once around the star follows a
                  uniform 640-cell run (10x closer than a uniform 320-cell run does, in rho_c, alpha_c
                  and psi_c over 300 steps); an adaptive run (Loehner on rho, two levels, regrid
@@ -234,8 +236,20 @@ def mode_migration(r):
                                                            np.mean(late), stable, m[-1] / m[0] - 1))
     assert rho[i_min] < 0.1 and t[i_min] < 1.0, "the star does not expand off the unstable branch"
     assert len(peaks) >= 3 and peaks[0] > peaks[1] > peaks[2], "the oscillations are not damped: %s" % peaks
-    assert 0.6 * stable < np.mean(late) < 1.4 * stable, "rho_c does not settle about the stable branch"
-    assert abs(m[-1] / m[0] - 1) < 0.1
+    # Against the README's 2D run (640 x 32, xi_eff = 1/50; minimum 0.040 at 0.65 ms, peaks 0.421, 0.312,
+    # 0.259) with this run's own values (minimum 0.0419 at 0.67 ms, peaks 0.430, 0.329, 0.269, last-ms
+    # mean 0.125, rest mass -2.12e-2): each window is centred on this run and wide enough to hold the
+    # 2D value (1D vs 2D, cadence and resolution differ: 5 % at the minimum, 2-5 % at the peaks).
+    expect = [("minimum of rho_c / rho_c(0)", rho[i_min], 0.0419, 0.0035),
+              ("time of the minimum (ms)", t[i_min], 0.67, 0.04),
+              ("first peak", peaks[0], 0.430, 0.012),
+              ("second peak", peaks[1], 0.329, 0.020),
+              ("third peak", peaks[2], 0.269, 0.013),
+              ("mean over the last ms", np.mean(late), 0.125, 0.006),
+              ("rest-mass change", m[-1] / m[0] - 1, -2.12e-2, 0.2e-2)]
+    for what, got, want, tol in expect:
+        print("  %-28s %.4g (expected %.4g +- %.2g)" % (what, got, want, tol))
+        assert abs(got - want) <= tol, "migration: %s = %.4g, expected %.4g +- %.2g" % (what, got, want, tol)
 
 
 def mode_curvilinear3d(r):
@@ -255,14 +269,14 @@ def mode_curvilinear3d(r):
     solves = [dict(zip(names, l.split("\t"))) for l in rows(os.path.join(one, "xcfc.tsv"))]
     assert len(solves) >= 3
     for s in solves:
-        tol = 1e-7 if s["reason"] == "initial" else 1e-6  # initial: 1e-10 or the round-off floor
+        tol = 1e-9 if s["reason"] == "initial" else 1e-6  # initial: 1e-10 or the round-off floor (5.5e-10 measured)
         for eq in ("X", "psi", "alphapsi", "beta"):
             assert float(s[eq + "_residual"]) <= tol, "unconverged %s solve: %s" % (eq, s)
     a3, a2 = columns(os.path.join(one, "analysis.tsv")), columns(os.path.join(flat, "analysis.tsv"))
     for col in ("alpha_c", "psi_c", "alpha_min", "psi_max"):
         d = abs(a3[col][0] / a2[col][0] - 1)
         print("3D spherical 64 x 8 x 16 vs 2D 64 x 8 initial metric, %s: relative difference %.2e" % (col, d))
-        assert d < 1e-7, "the 3D initial metric of the star differs from the 2D one (%s)" % col
+        assert d < 1.5e-8, "the 3D initial metric of the star differs from the 2D one (%s)" % col  # 9.3e-9 measured
     print("3D spherical run: solves converged, analysis.tsv and xcfc.tsv bit-identical on 1 and 2 ranks")
     # 3D cylindrical (R, z, phi) against 2D cylindrical: the initial metric of the same star.
     cyl = ["Grid::coordinates=cylindrical", "Grid::xmin=[0,0,0]", "Grid::xmax=[20,20,6.283185307179586]",
@@ -277,7 +291,7 @@ def mode_curvilinear3d(r):
     for col in ("alpha_c", "psi_c", "alpha_min", "psi_max"):
         d = abs(a3c[col][0] / a2c[col][0] - 1)
         print("3D cylindrical 32 x 32 x 8 vs 2D 32 x 32 initial metric, %s: relative difference %.2e" % (col, d))
-        assert d < 2e-7, "the 3D cylindrical initial metric differs from the 2D one (%s)" % col  # both solved to 1e-10
+        assert d < 7e-8, "the 3D cylindrical initial metric differs from the 2D one (%s)" % col  # 4.5e-8 measured
     # Refined: one static level over every angle inside r = 10 (whole phi rings and origin shells).
     amr = sph3 + ["Grid::max_level=1", "Grid::regions=[sphere]", "Grid::region_levels=[1]",
                   "Grid::region_bounds=[0,10,0,0,0,0]", "MoL::max_iterations=2"]
@@ -289,7 +303,7 @@ def mode_curvilinear3d(r):
     solves = [dict(zip(names, l.split("\t"))) for l in rows(os.path.join(r1, "xcfc.tsv"))]
     for s in solves:
         for eq in ("X", "psi", "alphapsi", "beta"):
-            assert float(s[eq + "_residual"]) <= (1e-7 if s["reason"] == "initial" else 1e-6), "refined: unconverged %s" % s
+            assert float(s[eq + "_residual"]) <= (1e-9 if s["reason"] == "initial" else 1e-6), "refined: unconverged %s" % s
     flat_amr, _ = mig.run("sph2d_amr", 1, ["Grid::ncells=[64,8,1]", "Grid::block_size=[32,8,1]", "Grid::max_level=1",
                                            "Grid::regions=[sphere]", "Grid::region_levels=[1]",
                                            "Grid::region_bounds=[0,10,0,0,0,0]", "MoL::max_iterations=0"])
@@ -297,7 +311,7 @@ def mode_curvilinear3d(r):
     for col in ("alpha_c", "psi_c", "rho_c"):
         d = abs(a1[col][0] / a2r[col][0] - 1)
         print("refined 3D spherical vs refined 2D (one level inside r = 10), initial %s: relative difference %.2e" % (col, d))
-        assert d < 1e-7, "the refined 3D initial metric differs from the refined 2D one (%s)" % col
+        assert d < 5e-9, "the refined 3D initial metric differs from the refined 2D one (%s)" % col  # 2.4e-9 measured
     print("refined 3D spherical: solves converged, bit-identical on 1 and 2 ranks")
 
 def main():

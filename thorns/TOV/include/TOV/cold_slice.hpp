@@ -26,4 +26,12 @@ std::unique_ptr<ColdSlice> polytrope_slice(double K, double Gamma, double ye);
 std::unique_ptr<ColdSlice> tabulated_slice(std::vector<double> rho, std::vector<double> press,
                                            std::vector<double> eps, std::vector<double> ye);
 
+// The same from points in segments inside which the EOS is smooth (segment_starts: index of each
+// segment's first point, ascending, starting with 0; a segment's first point is the previous one's
+// last): H by a third-order quadrature inside each segment, and interpolants that never straddle a
+// segment boundary (the kinks of an interpolated table at its density nodes).
+std::unique_ptr<ColdSlice> tabulated_slice_segments(const std::vector<double>& rho, const std::vector<double>& press,
+                                                    const std::vector<double>& eps, const std::vector<double>& ye,
+                                                    std::vector<std::size_t> segment_starts);
+
 }  // namespace remnant::tov
