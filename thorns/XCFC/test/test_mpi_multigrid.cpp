@@ -92,8 +92,32 @@ void check(const char* name, const GridShape& s, std::array<double, 2> max_err, 
     const double share = double(b.relaxed_cells) / double(a.relaxed_cells);
     EXPECT_NEAR(share, 1.0 / nranks, 0.1) << name << " " << kind << ": this rank relaxed " << b.relaxed_cells << " of "
                                           << a.relaxed_cells << " fine cells";
+    // The rest of each rank's per-cell work is split as well: boundary ghosts (its slab or line
+    // split only), line factors (the lines it relaxes), coarse equations (its coarse slab, the rest
+    // gathered). The levels below the split are computed by every rank: the bounds on 2 ranks are
+    // the measured shares (deterministic counts; 1.0 when every rank did all of it) plus a margin,
+    // the ghosts' highest on 32 x 32 x 18 (8 of 18 planes, its coarse levels keep 9 planes).
+    struct Share {
+      const char* what;
+      long long one, mine;
+      double bound;  // measured: ghosts 0.50-0.83, factors 0.53, restriction 0.52-0.63
+    };
+    for (const Share& w : {Share{"ghosts filled", a.ghost_entries, b.ghost_entries, 0.85},
+                           Share{"line cells factored", a.factored_cells, b.factored_cells, 0.6},
+                           Share{"cells restricted", a.restricted_cells, b.restricted_cells, 0.65}}) {
+      if (nranks == 1) EXPECT_EQ(w.one, w.mine) << name << " " << kind << ": " << w.what;
+      else if (nranks == 2) EXPECT_LE(double(w.mine), w.bound * double(w.one)) << name << " " << kind << ": " << w.what << " by this rank";
+    }
+    EXPECT_GT(a.ghost_entries, 0) << name;
+    EXPECT_GT(a.restricted_cells, 0) << name;
+    if (!nonlinear && s.dimension == 2) EXPECT_GT(a.factored_cells, 0) << name;
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (rank == 0)
+      std::printf("%-28s %-15s per rank/one rank: ghosts %.3f, factored %.3f, restricted %.3f; stored bytes %lld (one rank %lld)\n",
+                  name, kind, double(b.ghost_entries) / double(a.ghost_entries),
+                  a.factored_cells ? double(b.factored_cells) / double(a.factored_cells) : 0.0,
+                  double(b.restricted_cells) / double(a.restricted_cells), parallel.stored_bytes(), serial.stored_bytes());
     if (rank == 0)
       std::printf("%-28s %-15s V-cycles %2d  fine cells relaxed: one rank %lld, rank 0 of %d %lld (%.3f); max error %.2e\n",
                   name, kind, b.cycles, a.relaxed_cells, nranks, b.relaxed_cells, share, err);

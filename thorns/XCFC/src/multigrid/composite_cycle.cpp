@@ -17,7 +17,10 @@ namespace remnant::xcfc {
 
 void CompositeMultigrid::Impl::fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par) {
   Tier& T = tiers[static_cast<std::size_t>(t)];
-  if (t == 0) return fill_ghosts(T.patches[0], eq, T.patches[0].u, false);
+  if (t == 0) {
+    fill_ghosts(T.patches[0], eq, T.patches[0].u, false);
+    return;
+  }
   const Recipes& R = recipes_for(eq);
   auto u = [&](int tier, int patch) -> const std::vector<double>& {
     return tiers[static_cast<std::size_t>(tier)].patches[static_cast<std::size_t>(patch)].u;
