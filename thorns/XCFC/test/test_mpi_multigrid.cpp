@@ -92,6 +92,9 @@ void check(const char* name, const GridShape& s, std::array<double, 2> max_err, 
     const double share = double(b.relaxed_cells) / double(a.relaxed_cells);
     EXPECT_NEAR(share, 1.0 / nranks, 0.1) << name << " " << kind << ": this rank relaxed " << b.relaxed_cells << " of "
                                           << a.relaxed_cells << " fine cells";
+    // 2D at the origin rank 0 also relaxes the shells' extra theta lines (8 passes per relaxation of
+    // 2 sweeps): it takes fewer theta lines of the sweeps, so that the split is even (was 0.556).
+    if (nranks == 2 && s.dimension == 2) EXPECT_NEAR(share, 0.5, 0.01) << name << " " << kind;
     // The rest of each rank's per-cell work is split as well: boundary ghosts (its slab or line
     // split only), line factors (the lines it relaxes), coarse equations (its coarse slab, the rest
     // gathered). The levels below the split are computed by every rank: the bounds on 2 ranks are

@@ -72,7 +72,17 @@ Multigrid::Impl::Impl(const GridShape& shape, MPI_Comm c) : work(c) {
         for (int i = 0; i < fs.n[0]; ++i)
           C.restrict_volume[C.cell(i / F.ratio[0], j / F.ratio[1], k / F.ratio[2])] += F.volume[F.cell(i, j, k)];
   }
-  work.build(levels);
+  // 2D levels at the spherical origin: rank 0 relaxes the shells' extra theta-line passes alone,
+  // once per relaxation of (by default) two sweeps, so it takes that many fewer theta lines of each
+  // sweep's pass (the bits do not depend on who solves a line; only the balance does).
+  std::vector<int> rank0_extra(levels.size(), 0);
+  constexpr int kSweeps = SolveSettings{}.pre_sweeps;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const GridShape& s = levels[l].shape;
+    if (s.dimension == 2 && s.boundary[0][0] == Boundary::origin)
+      rank0_extra[l] = kOriginPasses * origin_shells(levels[l]) / kSweeps;
+  }
+  work.build(levels, rank0_extra);
   line_splits.resize(levels.size());
 }
 

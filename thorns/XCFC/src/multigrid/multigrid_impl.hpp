@@ -103,6 +103,7 @@ struct Multigrid::Impl {
   long long factor_own_lines(std::size_t l);
   // 2D spherical: the innermost radial cells whose theta lines get the extra local relaxation.
   static int origin_shells(const Level& L);
+  static constexpr int kOriginPasses = 8;  // zebra passes over them per relaxation
   bool coarse_ready = false;
   FactorCache factor_cache;  // line factors of geometry-only equations, kept between solves
 

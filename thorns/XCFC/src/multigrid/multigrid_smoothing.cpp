@@ -139,7 +139,7 @@ void Multigrid::Impl::relax(std::size_t l, const ScalarEquation& eq, int sweeps)
   // 4 shells, 15.0 with these (about 6 % more work per cycle).
   const Level& L = levels[l];
   if (L.shape.boundary[0][0] == Boundary::origin) {
-    relax_origin_shells(l, eq, origin_shells(L), 8);
+    relax_origin_shells(l, eq, origin_shells(L), kOriginPasses);
   }
 }
 
