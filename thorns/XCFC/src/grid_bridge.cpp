@@ -98,13 +98,21 @@ GridBridge::Place GridBridge::place(const Block& b) const {
 
 void GridBridge::complete(CompositeField& f) const {
   if (ctx_.nranks() > 1) {
-    std::vector<double> flat;
-    for (const auto& p : f.part) flat.insert(flat.end(), p.begin(), p.end());
-    MPI_Allreduce(MPI_IN_PLACE, flat.data(), static_cast<int>(flat.size()), MPI_DOUBLE, MPI_SUM, ctx_.grid().comm());
-    std::size_t at = 0;
-    for (auto& p : f.part) {
-      std::copy(flat.begin() + static_cast<std::ptrdiff_t>(at), flat.begin() + static_cast<std::ptrdiff_t>(at + p.size()), p.begin());
-      at += p.size();
+    // The base part in place (no copies of the largest part), the patches flattened into one
+    // message. Every cell has one nonzero term, so the sums are exact in any grouping.
+    const MPI_Comm comm = ctx_.grid().comm();
+    std::vector<double>& base = f.part.at(0);
+    MPI_Allreduce(MPI_IN_PLACE, base.data(), static_cast<int>(base.size()), MPI_DOUBLE, MPI_SUM, comm);
+    if (f.part.size() > 1) {
+      std::vector<double> flat;
+      for (std::size_t n = 1; n < f.part.size(); ++n) flat.insert(flat.end(), f.part[n].begin(), f.part[n].end());
+      MPI_Allreduce(MPI_IN_PLACE, flat.data(), static_cast<int>(flat.size()), MPI_DOUBLE, MPI_SUM, comm);
+      std::size_t at = 0;
+      for (std::size_t n = 1; n < f.part.size(); ++n) {
+        auto& p = f.part[n];
+        std::copy(flat.begin() + static_cast<std::ptrdiff_t>(at), flat.begin() + static_cast<std::ptrdiff_t>(at + p.size()), p.begin());
+        at += p.size();
+      }
     }
   }
   mg_.fill_covered(f);

@@ -15,16 +15,28 @@
 
 namespace remnant::xcfc {
 
-void CompositeMultigrid::Impl::fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par) {
+void CompositeMultigrid::Impl::fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par, const Tier::Split* mine_only) {
   Tier& T = tiers[static_cast<std::size_t>(t)];
-  if (t == 0) return fill_ghosts(T.patches[0], eq, T.patches[0].u, false);
+  if (t == 0) {
+    fill_ghosts(T.patches[0], eq, T.patches[0].u, false);
+    return;
+  }
   const Recipes& R = recipes_for(eq);
   auto u = [&](int tier, int patch) -> const std::vector<double>& {
     return tiers[static_cast<std::size_t>(tier)].patches[static_cast<std::size_t>(patch)].u;
   };
-  for (std::size_t p = 0; p < T.patches.size(); ++p)
-    for (const Recipe& r : R.ghosts[static_cast<std::size_t>(t)][p])
-      T.patches[p].u[r.target] = evaluate(R, r, par, eq, false, u);
+  auto fill_patch = [&](std::size_t p) {
+    const auto& recipes = R.ghosts[static_cast<std::size_t>(t)][p];
+    for (const Recipe& r : recipes) T.patches[p].u[r.target] = evaluate(R, r, par, eq, false, u);
+    ghosts_filled += static_cast<long long>(recipes.size());
+  };
+  if (mine_only && nranks > 1) {
+    const auto [u0, u1] = mine(*mine_only);
+    for (std::size_t n = u0; n < u1; ++n)
+      for (const int p : mine_only->units[n]) fill_patch(static_cast<std::size_t>(p));
+    return;
+  }
+  for (std::size_t p = 0; p < T.patches.size(); ++p) fill_patch(p);
 }
 
 void CompositeMultigrid::Impl::relax(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
@@ -33,7 +45,7 @@ void CompositeMultigrid::Impl::relax(int t, const ScalarEquation& eq, const std:
   const auto [u0, u1] = mine(T.points);
   for (int sweep = 0; sweep < sweeps; ++sweep)
     for (int colour = 0; colour < 2; ++colour) {
-      fill(t, eq, par);
+      fill(t, eq, par, &T.points);
       for (std::size_t u = u0; u < u1; ++u) {
         Level& P = T.patches[static_cast<std::size_t>(T.points.units[u][0])];
         count(t, red_black_pass(P, full_range(P), colour));
@@ -50,8 +62,8 @@ void CompositeMultigrid::Impl::relax_lines(int t, const ScalarEquation& eq, cons
   for (auto& R : T.shell) copy_unit<true>(T, R, &Level::f, false);
   for (int sweep = 0; sweep < sweeps; ++sweep)
     for (int d = 0; d < dims; ++d) {
-      fill(t, eq, par);
       const auto& S = T.lines[static_cast<std::size_t>(d)];
+      fill(t, eq, par, &S);
       const auto [u0, u1] = mine(S);
       for (std::size_t u = u0; u < u1; ++u) {
         auto& R = T.runs[static_cast<std::size_t>(d)][u];

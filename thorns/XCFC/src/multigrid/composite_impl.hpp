@@ -81,7 +81,10 @@ struct CompositeMultigrid::Impl {
   void set_equation(const CompositeEquation& eq);
 
   // ---- operations on a tier ---------------------------------------------------------------------
-  void fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par);
+  // mine: only the patches of this rank's units of that split (the ghosts its relaxation reads; a
+  // recipe reads interior values only, so the filled ghosts have the bits of a whole fill).
+  void fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par, const Tier::Split* mine = nullptr);
+  long long ghosts_filled = 0;  // by this rank in the current solve (recipes evaluated)
 
   // Relaxation of a tier's patches: red-black points (1D, 3D Cartesian) or zebra lines along runs of
   // patches in every direction (2D, 3D cylindrical and spherical; a row split into patches is one

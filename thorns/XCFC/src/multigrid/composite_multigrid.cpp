@@ -321,6 +321,7 @@ SolveStats CompositeMultigrid::solve(const CompositeEquation& eq, CompositeField
   }
   m.set_equation(eq);
   m.relaxed_finest = m.relaxed_all = 0;
+  m.ghosts_filled = 0;
   const ScalarEquation& bc = eq.boundary;
   const auto par = parity_factors(bc);
   SolveStats st;
@@ -366,6 +367,7 @@ SolveStats CompositeMultigrid::solve(const CompositeEquation& eq, CompositeField
   st.converged = r.above_floor <= s.tolerance * st.scale;
   st.factor = st.cycles > 0 && st.initial_residual > 0 ? std::pow(res / st.initial_residual, 1.0 / st.cycles) : 0.0;
   st.relaxed_cells = m.relaxed_finest, st.relaxed_cells_all = m.relaxed_all;  // patches only (refined levels)
+  st.ghost_entries = m.ghosts_filled;  // patch ghosts (recipes) only
   m.store(u);
   return st;
 }

@@ -129,4 +129,21 @@ Level::Level(const GridShape& s) : shape(s) {
   }
 }
 
+std::size_t Level::stored_bytes() const {
+  std::size_t n = 0;
+  auto add = [&](const auto& v) { n += v.capacity() * sizeof(v[0]); };
+  for (const auto* v : {&volume, &diagonal, &restrict_volume, &line_di, &line_rhs, &line_scratch, &line_z, &line_cyclic,
+                        &shell_scratch, &dft_cos, &dft_sin, &k, &s0, &s1, &s7, &f, &r, &k_eq, &u, &ubar})
+    add(*v);
+  for (int d = 0; d < 3; ++d) {
+    for (const auto* v : {&a_lo[d], &a_hi[d], &mode_k[d], &line_w[d], &line_inv[d]}) add(*v);
+    for (int side = 0; side < 2; ++side) {
+      for (const auto* v : {&robin1[d][side], &robin2[d][side], &end_c1[d][side]}) add(*v);
+      const GhostFace& g = ghost_faces[d][side];
+      for (const auto* v : {&g.ghost, &g.inner, &g.mirror}) add(*v);
+    }
+  }
+  return n;
+}
+
 }  // namespace remnant::xcfc

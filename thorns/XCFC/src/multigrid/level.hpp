@@ -52,6 +52,7 @@ struct Level {
   std::vector<double> u, ubar;                    // ghosted
 
   explicit Level(const GridShape& s);
+  std::size_t stored_bytes() const;  // capacity of all arrays
   std::size_t cells() const { return shape.cells(); }
   std::ptrdiff_t at(int i, int j, int k) const { return (i + g[0]) + (j + g[1]) * st[1] + (k + g[2]) * st[2]; }
   std::ptrdiff_t at_cell(std::size_t q) const {  // ghosted offset of interior cell q

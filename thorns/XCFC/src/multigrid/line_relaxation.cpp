@@ -1,5 +1,6 @@
 #include "line_relaxation.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "level_ops.hpp"
@@ -117,16 +118,17 @@ void set_line_ends(Level& L, const ScalarEquation& eq) {
   }
 }
 
-void factor_lines(Level& L) {
+long long factor_lines(Level& L, std::array<int, 2> t0, std::array<int, 2> t1) {
   const GridShape& s = L.shape;
   L.factored = false;
-  if (s.dimension > 2 || !L.s1.empty() || !L.s7.empty()) return;
+  long long cells = 0;
+  if (s.dimension > 2 || !L.s1.empty() || !L.s7.empty()) return cells;
   for (int d = 0; d < s.dimension; ++d) {
     const Lines ln(L, d);
     const double *alo = L.a_lo[d].data(), *ahi = L.a_hi[d].data();
     const double *c1lo = L.end_c1[d][0].data(), *c1hi = L.end_c1[d][1].data();
     double *w = L.line_w[d].data(), *inv = L.line_inv[d].data();
-    for (int t = 0; t < ln.count; ++t) {
+    for (int t = std::max(0, t0[d]), end = std::min(ln.count, t1[d]); t < end; ++t, cells += ln.n) {
       std::size_t q = ln.q0(t);
       double prev_inv = 0, prev_up = 0;
       for (int m = 0; m < ln.n; ++m, q += static_cast<std::size_t>(ln.qd)) {
@@ -142,6 +144,7 @@ void factor_lines(Level& L) {
     }
   }
   L.factored = true;
+  return cells;
 }
 
 long long line_pass(Level& L, const Lines& ln, int colour, int t0, int t1) {

@@ -1,6 +1,7 @@
 #pragma once
 // Line relaxation on 1D and 2D levels: the geometry of the lines of one direction, their boundary
 // ends, the Thomas factors of fixed (linear) line matrices and one zebra pass of line solves.
+#include <array>
 #include <cstddef>
 
 #include "level.hpp"
@@ -29,8 +30,11 @@ struct Lines {
 void set_line_ends(Level& L, const ScalarEquation& eq);
 
 // Thomas forward-elimination factors of the (fixed) line matrices of a linear equation; sets
-// L.factored (false for nonlinear equations and 3D levels).
-void factor_lines(Level& L);
+// L.factored (false for nonlinear equations and 3D levels). Lines t0[d] <= t < t1[d] of each
+// direction d only (a distributed level: the lines this rank relaxes; the others keep stale
+// factors that no pass of this rank reads); by default all.
+// Returns the number of cells factored.
+long long factor_lines(Level& L, std::array<int, 2> t0 = {0, 0}, std::array<int, 2> t1 = {1 << 30, 1 << 30});
 
 // Zebra line Gauss-Seidel along direction d (Thomas algorithm): robust against the anisotropy of
 // spherical grids (theta coupling dominates near the origin, radial coupling far out). Linear

@@ -72,7 +72,17 @@ Multigrid::Impl::Impl(const GridShape& shape, MPI_Comm c) : work(c) {
         for (int i = 0; i < fs.n[0]; ++i)
           C.restrict_volume[C.cell(i / F.ratio[0], j / F.ratio[1], k / F.ratio[2])] += F.volume[F.cell(i, j, k)];
   }
-  work.build(levels);
+  // 2D levels at the spherical origin: rank 0 relaxes the shells' extra theta-line passes alone,
+  // once per relaxation of (by default) two sweeps, so it takes that many fewer theta lines of each
+  // sweep's pass (the bits do not depend on who solves a line; only the balance does).
+  std::vector<int> rank0_extra(levels.size(), 0);
+  constexpr int kSweeps = SolveSettings{}.pre_sweeps;
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    const GridShape& s = levels[l].shape;
+    if (s.dimension == 2 && s.boundary[0][0] == Boundary::origin)
+      rank0_extra[l] = kOriginPasses * origin_shells(levels[l]) / kSweeps;
+  }
+  work.build(levels, rank0_extra);
   line_splits.resize(levels.size());
 }
 
@@ -107,28 +117,80 @@ void Multigrid::Impl::set_coarse_equations(const ScalarEquation& eq) {
   const bool zero_k = FactorCache::zero_k(eq);
   for (std::size_t l = 0; l + 1 < levels.size(); ++l) {
     Level &F = levels[l], &C = levels[l + 1];
-    // Once per solve, by every rank: the coarse equations are complete everywhere.
-    const Range RF = work.full(l), RC = work.full(l + 1);
+    // Once per solve; the coarse equations are complete on every rank afterwards (the lines across
+    // the slabs and the undistributed levels below read all of them). A distributed coarse level
+    // restricts its own slab (nested in the fine one's) and gathers the rest: each coarse cell sums
+    // the same fine cells in the same order, so the bits do not depend on the rank count.
+    const bool split = work.part(l + 1).dist;
+    const Range RF = split ? work.range(l) : work.full(l), RC = split ? work.range(l + 1) : work.full(l + 1);
+    auto restricted = [&](const std::vector<double>& fine, std::vector<double>& coarse) {
+      restrict_interior(F, C, fine, coarse, RF, RC);
+      restricted_cells += static_cast<long long>(F.shape.n[0]) * (RF.j1 - RF.j0) * (RF.k1 - RF.k0);
+      work.replicate(l + 1, coarse, false);
+    };
     // No matter coefficient: zeros restrict to zeros (the same bits, none of the work).
     if (zero_k) C.k_eq.assign(C.cells(), 0.0);
-    else restrict_interior(F, C, F.k_eq, C.k_eq, RF, RC);
-    restrict_interior(F, C, F.s0, C.s0, RF, RC);
-    if (F.s1.empty()) C.s1.clear(); else restrict_interior(F, C, F.s1, C.s1, RF, RC);
-    if (F.s7.empty()) C.s7.clear(); else restrict_interior(F, C, F.s7, C.s7, RF, RC);
+    else restricted(F.k_eq, C.k_eq);
+    restricted(F.s0, C.s0);
+    if (F.s1.empty()) C.s1.clear(); else restricted(F.s1, C.s1);
+    if (F.s7.empty()) C.s7.clear(); else restricted(F.s7, C.s7);
     add_mode_term(C, eq.mode);
     C.f.resize(C.cells());
     C.r.resize(C.cells());
     if (C.u.size() != C.ghosted_size) C.u.assign(C.ghosted_size, 0.0);
   }
   if (!factor_cache.acquire(levels, eq)) {
-    for (auto& L : levels) {
+    for (std::size_t l = 0; l < levels.size(); ++l) {
+      Level& L = levels[l];
       set_line_ends(L, eq);
       if (L.shape.dimension == 3 && L.shape.coordinates != CoordinateSystem::cartesian) factor_lines_3d(L, eq);
-      else factor_lines(L);
+      else factored_cells += factor_own_lines(l);
     }
     factor_cache.computed(levels);
   }
   coarse_ready = true;
+}
+
+long long Multigrid::Impl::factor_own_lines(std::size_t l) {
+  Level& L = levels[l];
+  const auto& p = work.part(l);
+  if (!p.dist || L.shape.dimension != 2 || p.s != 1) return factor_lines(L);
+  // Lines along i (indexed by j): the own slab; along j (indexed by i): the own line split, and on
+  // rank 0 also the origin shells it relaxes for everyone (relax_origin_shells).
+  const int along_j_end = work.rank() == 0 ? std::max(p.line_hi, origin_shells(L)) : p.line_hi;
+  return factor_lines(L, {p.lo, p.line_lo}, {p.hi, along_j_end});
+}
+
+int Multigrid::Impl::origin_shells(const Level& L) {
+  // At most n0 / 16 shells: on radially coarse grids 1/dtheta is a large part of the level.
+  const int n0 = L.shape.n[0], angular = static_cast<int>(std::ceil(1.0 / L.shape.dx[1]));
+  return std::min({std::max(4, angular), std::max(4, n0 / 16), n0});
+}
+
+GhostBox Multigrid::Impl::rows_box(std::size_t l) const {
+  GhostBox box;
+  const auto& p = work.part(l);
+  if (p.dist) box.b[static_cast<std::size_t>(p.s)] = p.lo - 1, box.e[static_cast<std::size_t>(p.s)] = p.hi + 1;
+  return box;
+}
+
+GhostBox Multigrid::Impl::columns_box(std::size_t l, int c0, int c1) const {
+  GhostBox box;
+  if (work.part(l).dist) box.b[0] = c0 - 1, box.e[0] = c1 + 1;
+  return box;
+}
+
+double Multigrid::Impl::max_abs_owned(std::size_t l, const std::vector<double>& a) const {
+  const auto& p = work.part(l);
+  std::size_t b = 0, e = a.size();
+  if (p.dist) {  // the owned planes, the domain's ghost planes with the first and last slab
+    const auto plane = static_cast<std::size_t>(p.plane);
+    if (work.rank() > 0) b = static_cast<std::size_t>(p.lo + 1) * plane;
+    if (work.rank() + 1 < work.nranks()) e = static_cast<std::size_t>(p.hi + 1) * plane;
+  }
+  double m = 0;
+  for (std::size_t q = b; q < e; ++q) m = std::max(m, std::abs(a[q]));
+  return work.global_max(m);  // a max is exact in any order
 }
 
 void Multigrid::Impl::load(const std::vector<double>& u) {
@@ -156,6 +218,14 @@ int Multigrid::distributed_levels() const {
 
 long long Multigrid::reused_factorisations() const { return impl_->factor_cache.hits(); }
 long long Multigrid::received_bytes() const { return impl_->work.received_bytes(); }
+long long Multigrid::stored_bytes() const {
+  const Impl& m = *impl_;
+  std::size_t n = m.frames.J.capacity() * sizeof(Matrix3) + m.frames.f.capacity() * sizeof(Point3);
+  for (const Level& L : m.levels) n += L.stored_bytes();
+  for (const auto& p : m.work.all_parts())
+    for (const auto* v : {&p.sbuf, &p.rbuf, &p.gbuf, &p.tsend, &p.trecv}) n += v->capacity() * sizeof(double);
+  return static_cast<long long>(n);
+}
 
 SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, const SolveSettings& s) {
   Impl& m = *impl_;
@@ -164,6 +234,7 @@ SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, co
   m.set_fine_equation(eq);
   m.load(u);
   m.relaxed_fine = m.relaxed_all = 0;
+  m.ghost_entries = m.factored_cells = m.restricted_cells = 0;
   SolveStats st;
   Level& L = m.levels[0];
   // No sources, no boundary values: the solution is zero (no cycles spent on round-off).
@@ -188,10 +259,8 @@ SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, co
   // Round-off floor of the residual: the largest operator term times a few ulps. Near the spherical
   // origin and axis the coefficients are large and a relative 1e-10 can lie below it.
   auto floor = [&] {
-    const double m = L.max_diagonal;
-    double umax = 0;
-    for (double v : L.u) umax = std::max(umax, std::abs(v));
-    return 256 * std::numeric_limits<double>::epsilon() * m * umax;
+    const double umax = m.max_abs_owned(0, L.u);
+    return 256 * std::numeric_limits<double>::epsilon() * L.max_diagonal * umax;
   };
   const double noise = floor();
   static const bool debug = std::getenv("XCFC_DEBUG") != nullptr;
@@ -213,6 +282,7 @@ SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, co
   st.converged = res <= std::max(s.tolerance * st.scale, noise);
   st.factor = st.cycles > 0 && st.initial_residual > 0 ? std::pow(res / st.initial_residual, 1.0 / st.cycles) : 0.0;
   st.relaxed_cells = m.relaxed_fine, st.relaxed_cells_all = m.relaxed_all;
+  st.ghost_entries = m.ghost_entries, st.factored_cells = m.factored_cells, st.restricted_cells = m.restricted_cells;
   m.work.replicate(0, L.u, true);  // the solution complete on every rank
   m.store(u);
   return st;

@@ -14,7 +14,7 @@ namespace remnant::xcfc {
 double Multigrid::Impl::residual(std::size_t l, const ScalarEquation& eq) {
   Level& L = levels[l];
   work.halo(l, L.u);
-  fill_ghosts(L, eq, L.u, false);
+  count_fill(L, eq, L.u, false, rows_box(l));
   const Range R = work.range(l);
   apply_operator(L, L.u, L.r, R);
   double m = 0;
@@ -81,7 +81,7 @@ void Multigrid::Impl::vcycle(std::size_t l, const ScalarEquation& eq, const Solv
   const Range RF = work.part(l + 1).dist ? work.range(l) : work.full(l), RC = work.range(l + 1);
   restrict_ghosted(F, C, F.u, C.u, RF, RC);
   work.halo(l + 1, C.u);
-  fill_ghosts(C, eq, C.u, false);
+  count_fill(C, eq, C.u, false, rows_box(l + 1));
   C.ubar = C.u;
   restrict_interior(F, C, F.r, C.f, RF, RC);
   apply_operator(C, C.ubar, C.r, RC);  // C.r as scratch: the coarse cycle recomputes it before use
@@ -95,7 +95,7 @@ void Multigrid::Impl::vcycle(std::size_t l, const ScalarEquation& eq, const Solv
   const std::size_t p1 = pc.dist ? static_cast<std::size_t>((pc.hi + 1) * pc.plane) : C.u.size();
   for (std::size_t p = p0; p < p1; ++p) C.ubar[p] = C.u[p] - C.ubar[p];
   work.halo(l + 1, C.ubar);
-  fill_ghosts(C, eq, C.ubar, true);
+  count_fill(C, eq, C.ubar, true, rows_box(l + 1));
   prolong(C, F, C.ubar, F.u, false, work.range(l));
   relax(l, eq, s.post_sweeps);
 }
@@ -109,7 +109,7 @@ void Multigrid::Impl::full_multigrid(const ScalarEquation& eq, const SolveSettin
   coarse_solve(levels.size() - 1, eq, std::max(s.coarse_sweeps, 20 * static_cast<int>(levels.back().cells())));
   for (std::size_t l = levels.size() - 1; l-- > 0;) {
     work.halo(l + 1, levels[l + 1].u);
-    fill_ghosts(levels[l + 1], eq, levels[l + 1].u, false);
+    count_fill(levels[l + 1], eq, levels[l + 1].u, false, rows_box(l + 1));
     prolong(levels[l + 1], levels[l], levels[l + 1].u, levels[l].u, true, work.range(l));
     for (std::size_t m = l; m < levels.size(); ++m) std::fill(levels[m].f.begin(), levels[m].f.end(), 0.0);
     vcycle(l, eq, s);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "XCFC/multigrid/multigrid.hpp"
+#include "boundary_ghosts.hpp"
 #include "factor_cache.hpp"
 #include "level.hpp"
 #include "work_partition.hpp"
@@ -20,6 +21,7 @@ struct Multigrid::Impl {
   CellFrames frames;
   WorkPartition work;
   long long relaxed_fine = 0, relaxed_all = 0;  // this rank's relaxed cells in the current solve
+  long long ghost_entries = 0, factored_cells = 0, restricted_cells = 0;  // and its other cell work
 
   // The level hierarchy of a grid, the restriction weights and the MPI split.
   Impl(const GridShape& shape, MPI_Comm c);
@@ -30,6 +32,15 @@ struct Multigrid::Impl {
     relaxed_all += n;
     if (l == 0) relaxed_fine += n;
   }
+
+  // Ghost boxes of level l (the whole level when it is not split): the owned slab with its halo
+  // planes, or the owned columns [c0, c1) with their neighbours (the lines across the slabs).
+  GhostBox rows_box(std::size_t l) const;
+  void count_fill(const Level& L, const ScalarEquation& eq, std::vector<double>& a, bool homogeneous,
+                  const GhostBox& box = GhostBox{}) {
+    ghost_entries += static_cast<long long>(fill_ghosts(L, eq, a, homogeneous, box));
+  }
+  GhostBox columns_box(std::size_t l, int c0, int c1) const;
 
   // r = f - A(u) on the owned cells; returns max|r| over all ranks (a max is exact in any order).
   double residual(std::size_t l, const ScalarEquation& eq);
@@ -88,8 +99,16 @@ struct Multigrid::Impl {
   // cycle is needed (a warm start that already meets the tolerance costs one residual).
   void set_fine_equation(const ScalarEquation& eq);
   void set_coarse_equations(const ScalarEquation& eq);
+  // Thomas factors of the lines this rank relaxes on level l (all lines of an undistributed level).
+  long long factor_own_lines(std::size_t l);
+  // 2D spherical: the innermost radial cells whose theta lines get the extra local relaxation.
+  static int origin_shells(const Level& L);
+  static constexpr int kOriginPasses = 8;  // zebra passes over them per relaxation
   bool coarse_ready = false;
   FactorCache factor_cache;  // line factors of geometry-only equations, kept between solves
+
+  // max |a| over a ghosted array of level l, each rank reading its own planes (the same value).
+  double max_abs_owned(std::size_t l, const std::vector<double>& a) const;
 
   void load(const std::vector<double>& u);
   void store(std::vector<double>& u) const;

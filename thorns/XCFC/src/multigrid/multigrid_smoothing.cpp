@@ -23,7 +23,7 @@ void Multigrid::Impl::smooth(std::size_t l, const ScalarEquation& eq, int sweeps
   for (int sweep = 0; sweep < sweeps; ++sweep)
     for (int colour = 0; colour < 2; ++colour) {
       work.halo(l, L.u);
-      fill_ghosts(L, eq, L.u, false);
+      count_fill(L, eq, L.u, false, rows_box(l));
       n += red_black_pass(L, R, colour);
     }
   count(l, n);
@@ -38,6 +38,7 @@ void Multigrid::Impl::smooth_lines(std::size_t l, const ScalarEquation& eq, int 
   if (along) t0 = p.line_lo, t1 = p.line_hi, work.to_columns(l, L.u);
   else if (p.dist) t0 = p.lo, t1 = p.hi;
   t1 = std::max(t0, std::min(t1, limit));
+  const GhostBox box = along ? columns_box(l, t0, t1) : rows_box(l);
   long long n = 0;
   for (int colour = 0; colour < (ln.count > 1 ? 2 : 1); ++colour) {
     if (along) {
@@ -45,7 +46,7 @@ void Multigrid::Impl::smooth_lines(std::size_t l, const ScalarEquation& eq, int 
     } else {
       work.halo(l, L.u);
     }
-    fill_ghosts(L, eq, L.u, false);
+    count_fill(L, eq, L.u, false, box);
     n += line_pass(L, ln, colour, t0, t1);
   }
   if (along) work.to_slabs(l, L.u);
@@ -84,7 +85,7 @@ void Multigrid::Impl::smooth_lines_3d(std::size_t l, const ScalarEquation& eq, i
   auto cut = [&](int r) { return lines * static_cast<std::size_t>(r) / static_cast<std::size_t>(P); };
   long long n = 0;
   for (int colour = 0; colour < 2; ++colour) {
-    fill_ghosts(L, eq, L.u, false);
+    count_fill(L, eq, L.u, false);
     if (!split) {
       n += line_pass_3d(L, eq, d, colour);
       continue;
@@ -120,7 +121,7 @@ void Multigrid::Impl::relax(std::size_t l, const ScalarEquation& eq, int sweeps)
     // Next to the spherical origin: plane relaxation of the shells whose angular coupling
     // exceeds the radial one (i < 1/dtheta; V-cycle factors 0.85 -> 0.04 on 32^3).
     if (s.boundary[0][0] == Boundary::origin && s.boundary[2][0] == Boundary::periodic) {
-      fill_ghosts(levels[l], eq, levels[l].u, false);
+      count_fill(levels[l], eq, levels[l].u, false);
       count(l, relax_inner_shells(levels[l], eq, angular_shells(levels[l])));
     }
     return;
@@ -138,10 +139,7 @@ void Multigrid::Impl::relax(std::size_t l, const ScalarEquation& eq, int sweeps)
   // 4 shells, 15.0 with these (about 6 % more work per cycle).
   const Level& L = levels[l];
   if (L.shape.boundary[0][0] == Boundary::origin) {
-    // At most n0 / 16 shells: on radially coarse grids 1/dtheta is a large part of the level.
-    const int n0 = L.shape.n[0], angular = static_cast<int>(std::ceil(1.0 / L.shape.dx[1]));
-    const int shells = std::min({std::max(4, angular), std::max(4, n0 / 16), n0});
-    relax_origin_shells(l, eq, shells, 8);
+    relax_origin_shells(l, eq, origin_shells(L), kOriginPasses);
   }
 }
 
@@ -162,7 +160,7 @@ void Multigrid::Impl::relax_origin_shells(std::size_t l, const ScalarEquation& e
     long long n = 0;
     for (int pass = 0; pass < passes; ++pass)
       for (int colour = 0; colour < 2; ++colour) {
-        fill_ghosts(L, eq, L.u, false);
+        count_fill(L, eq, L.u, false, columns_box(l, 0, shells));
         n += line_pass(L, ln, colour, 0, shells);
       }
     count(l, n);

@@ -33,7 +33,20 @@ bool WorkPartition::splittable(const GridShape& s) const {
 // The leading splittable levels are distributed. The coarsest of them is split as evenly as
 // possible and the finer ones inherit its cuts times the coarsening ratios (nested slabs), so
 // restriction and prolongation between distributed levels stay rank-local apart from the halos.
-void WorkPartition::build(const std::vector<Level>& levels) {
+std::vector<int> WorkPartition::line_cuts(int n0, int extra) const {
+  const int P = nranks_;
+  std::vector<int> c(static_cast<std::size_t>(P) + 1, n0);
+  c[0] = 0;
+  if (P == 1) return c;
+  // Rank 0: c0 columns plus `extra` lines; the others (n0 - c0) / (P - 1) columns each.
+  const long long c0 = (static_cast<long long>(n0) - static_cast<long long>(extra) * (P - 1)) / P;
+  c[1] = static_cast<int>(std::clamp<long long>(c0, 1, n0 - (P - 1)));
+  for (int r = 2; r < P; ++r)
+    c[static_cast<std::size_t>(r)] = c[1] + static_cast<int>(static_cast<long long>(r - 1) * (n0 - c[1]) / (P - 1));
+  return c;
+}
+
+void WorkPartition::build(const std::vector<Level>& levels, const std::vector<int>& rank0_extra) {
   lv = &levels;
   parts.assign(lv->size(), Part{});
   for (std::size_t l = 0; l < lv->size(); ++l) {
@@ -73,21 +86,21 @@ void WorkPartition::build(const std::vector<Level>& levels) {
     }
     if (sh.dimension == 2) {
       const int n0 = sh.n[0], n1 = sh.n[1];
-      auto cut = [&](std::size_t r) { return static_cast<int>(static_cast<long long>(r) * n0 / nranks_); };
+      const std::vector<int> cuts = line_cuts(n0, l < rank0_extra.size() ? rank0_extra[l] : 0);
+      auto cut = [&](std::size_t r) { return cuts[r]; };
       for (std::size_t r = 0; r < P; ++r) p.blk_counts[r] = (cut(r + 1) - cut(r)) * n1, p.blk_displs[r] = cut(r) * n1;
       p.line_lo = cut(static_cast<std::size_t>(rank_)), p.line_hi = cut(static_cast<std::size_t>(rank_) + 1);
       p.sbuf.assign(static_cast<std::size_t>(std::max((p.line_hi - p.line_lo) * n1, n1)), 0.0);
       p.rbuf.assign(static_cast<std::size_t>(n1), 0.0);
       p.gbuf.assign(sh.cells(), 0.0);
-      set_transposes(p, sh, b);
+      set_transposes(p, sh, b, cuts);
     }
   }
 }
-void WorkPartition::set_transposes(Part& p, const GridShape& sh, const std::vector<int>& slab) {
+void WorkPartition::set_transposes(Part& p, const GridShape& sh, const std::vector<int>& slab, const std::vector<int>& cols) {
   const auto P = static_cast<std::size_t>(nranks_), me = static_cast<std::size_t>(rank_);
   const int n0 = sh.n[0];
-  p.cols.assign(P + 1, 0);
-  for (std::size_t r = 0; r <= P; ++r) p.cols[r] = static_cast<int>(static_cast<long long>(r) * n0 / nranks_);
+  p.cols = cols;
   auto ext = [&](std::size_t r) { return std::min(n0, p.cols[r + 1] + 1) - std::max(0, p.cols[r] - 1); };
   auto own = [&](std::size_t r) { return p.cols[r + 1] - p.cols[r]; };
   auto rows = [&](std::size_t r) { return slab[r + 1] - slab[r]; };

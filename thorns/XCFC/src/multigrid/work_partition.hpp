@@ -42,7 +42,9 @@ class WorkPartition {
   WorkPartition& operator=(const WorkPartition&) = delete;
 
   // Partitions a hierarchy (kept by reference: it must outlive this and not reallocate).
-  void build(const std::vector<Level>& levels);
+  // rank0_extra[l]: lines along the split direction that rank 0 relaxes alone on level l (the
+  // origin shells' extra passes); the 2D line split gives rank 0 that many fewer columns.
+  void build(const std::vector<Level>& levels, const std::vector<int>& rank0_extra = {});
   const Part& part(std::size_t l) const { return parts[l]; }
   const std::vector<Part>& all_parts() const { return parts; }
   int rank() const { return rank_; }
@@ -77,7 +79,10 @@ class WorkPartition {
 
  private:
   bool splittable(const GridShape& s) const;
-  void set_transposes(Part& p, const GridShape& sh, const std::vector<int>& slab);
+  // First column of each rank's line split (nranks + 1 entries) of n0 columns, rank 0 relaxing
+  // `extra` lines besides its own: balanced in lines, at least one column per rank.
+  std::vector<int> line_cuts(int n0, int extra) const;
+  void set_transposes(Part& p, const GridShape& sh, const std::vector<int>& slab, const std::vector<int>& cols);
   int neighbour(int dr) const;
 
   MPI_Comm comm = MPI_COMM_SELF;

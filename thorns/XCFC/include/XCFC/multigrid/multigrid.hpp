@@ -57,6 +57,9 @@ struct SolveStats {
   // Cells relaxed by this rank (point updates plus cells of relaxed lines) on the finest level and
   // on all levels: the measure of how the work is split between ranks.
   long long relaxed_cells = 0, relaxed_cells_all = 0;
+  // The rest of this rank's per-cell work on all levels: boundary ghosts filled, line cells
+  // factored (Thomas factors of linear equations), fine cells restricted into the coarse equations.
+  long long ghost_entries = 0, factored_cells = 0, restricted_cells = 0;
 };
 
 // Geometry of the finest level's cells in the ghosted layout (ghosted_index), computed once per
@@ -83,6 +86,8 @@ class Multigrid {
   long long reused_factorisations() const;
   // Bytes this rank has received in the exchanges of the distributed levels since construction.
   long long received_bytes() const;
+  // Bytes of the arrays this rank holds for the hierarchy (capacity of the level arrays).
+  long long stored_bytes() const;
   // Solves in place: u holds the initial guess (warm start) and returns the solution.
   SolveStats solve(const ScalarEquation& eq, std::vector<double>& u, const SolveSettings& s);
   // Max-norm residual of the finest-level discrete equation.
