@@ -11,101 +11,42 @@
 #include "GRMHD/sources.hpp"
 #include "GRMHD/sources_mhd.hpp"
 #include "GRMHD/valencia.hpp"
+#include "face_kernel.hpp"
 #include "line_scratch.hpp"
 #include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd {
 namespace {
 
-// Reconstructed variables: rho, W v^1, W v^2, W v^3, thermal (p or T), Ye.
-inline constexpr int kNumRec = 6;
-using HydroLineScratch = LineScratch<kNumRec, kNumCons>;
+using HydroLineScratch = LineScratch<kNumRecHydro, kNumCons>;
 
-template <class E>
-void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, int d, HydroLineScratch& L) {
-  const int n = b.n[d], ng = b.ng[d];
+template <int D, class E>
+void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, HydroLineScratch& L) {
+  const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
   Field prim[Prim::ncomp], met[Metric::ncomp], fout[kNumCons];
   for (int c = 0; c < Prim::ncomp; ++c) prim[c] = b.field(g.prim, c);
   for (int c = 0; c < Metric::ncomp; ++c) met[c] = b.field(g.metric, c);
-  for (int c = 0; c < kNumCons; ++c) fout[c] = b.field(g.flux[d], c);
-  const std::ptrdiff_t stride = d == 0 ? 1 : d == 1 ? prim[0].sj : prim[0].sk;
-  const std::ptrdiff_t fstride = d == 0 ? 1 : d == 1 ? fout[0].sj : fout[0].sk;
+  for (int c = 0; c < kNumCons; ++c) fout[c] = b.field(g.flux[D], c);
+  const LineSources src = LineSources::of<E>(prim, met);
+  const std::ptrdiff_t stride = D == 0 ? 1 : D == 1 ? prim[0].sj : prim[0].sk;
+  const std::ptrdiff_t fstride = D == 0 ? 1 : D == 1 ? fout[0].sj : fout[0].sk;
   // The two transverse directions.
-  const int a = d == 0 ? 1 : 0, c2 = d == 2 ? 1 : 2;
-  const CoordinateSystem cs = b.coordinates;
-  const bool cartesian = cs == CoordinateSystem::cartesian;
+  constexpr int a = D == 0 ? 1 : 0, c2 = D == 2 ? 1 : 2;
   const PolarTrig trig(b);
 
   for (int ic = 0; ic < b.n[c2]; ++ic)
     for (int ia = 0; ia < b.n[a]; ++ia) {
       int idx[3];
-      idx[d] = 0;
+      idx[D] = 0;
       idx[a] = ia;
       idx[c2] = ic;
       const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
       const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
-      // Gather.
-      {
-        const double* pr = prim[Prim::idx::rho].origin + base;
-        const double* pw = prim[Prim::idx::W].origin + base;
-        const double* pv[3] = {prim[Prim::idx::vel].origin + base, prim[Prim::idx::vel2].origin + base, prim[Prim::idx::vel3].origin + base};
-        const double* pth = (reconstructs_pressure<E> ? prim[Prim::idx::press] : prim[Prim::idx::temperature]).origin + base;
-        const double* pye = prim[Prim::idx::Ye].origin + base;
-        for (int m = -ng; m < n + ng; ++m) {
-          const std::ptrdiff_t o = m * stride;
-          const double W = pw[o];
-          L.cell[0][m] = pr[o];
-          L.cell[1][m] = W * pv[0][o];
-          L.cell[2][m] = W * pv[1][o];
-          L.cell[3][m] = W * pv[2][o];
-          L.cell[4][m] = pth[o];
-          L.cell[5][m] = pye[o];
-        }
-        for (int c = 0; c < Metric::ncomp; ++c) {
-          const double* pm = met[c].origin + base;
-          double* out = L.met[c];
-          for (int m = -ng; m < n + ng; ++m) out[m] = pm[m * stride];
-        }
-      }
-      for (int q = 0; q < kNumRec; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
-
-      // Transverse coordinates of this line (for f_ij at faces).
-      Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
-      std::array<double, 3> fd{1.0, 1.0, 1.0};
-      for (int f = 0; f <= n; ++f) {
-        const double psi = face_value(s.metric_faces, L.met[Metric::idx::psi], f);
-        const double alpha = face_value(s.metric_faces, L.met[Metric::idx::alpha], f);
-        std::array<double, 3> beta{face_value(s.metric_faces, L.met[Metric::idx::beta], f),
-                                   face_value(s.metric_faces, L.met[Metric::idx::beta2], f),
-                                   face_value(s.metric_faces, L.met[Metric::idx::beta3], f)};
-        if (!cartesian) {
-          x[d] = b.face_coordinate(d, f);
-          fd = coords::metric_diagonal(cs, x, d == 1 ? trig.sin_face(f) : trig.sin_centre(idx[1]));
-        }
-        const PointMetric pm = cartesian ? point_metric_cartesian(psi, alpha, beta) : point_metric(psi, alpha, beta, fd);
-        FluidState sl, sr;
-        sl.rho = L.left[0][f];
-        sr.rho = L.right[0][f];
-        sl.ye = L.left[5][f];
-        sr.ye = L.right[5][f];
-        set_velocity_from_wv(sl, pm, L.left[1][f], L.left[2][f], L.left[3][f]);
-        set_velocity_from_wv(sr, pm, L.right[1][f], L.right[2][f], L.right[3][f]);
-        complete_face_thermo(eos, sl, L.left[4][f]);
-        complete_face_thermo(eos, sr, L.right[4][f]);
-        double ul[kNumCons], ur[kNumCons], fl[kNumCons], fr[kNumCons], fh[kNumCons];
-        conserved(sl, ul);
-        conserved(sr, ur);
-        flux(d, sl, pm, ul, fl);
-        flux(d, sr, pm, ur, fr);
-        double lml, lpl, lmr, lpr;
-        characteristic_speeds(d, sl, pm, lml, lpl);
-        characteristic_speeds(d, sr, pm, lmr, lpr);
-        hll_flux(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
-        const double p2 = psi * psi;
-        const double psi6 = p2 * p2 * p2;
-        for (int c = 0; c < kNumCons; ++c) L.flux[c][f] = fh[c] * psi6;
-      }
+      gather_line(src, nullptr, base, stride, n, ng, L);
+      for (int q = 0; q < kNumRecHydro; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
+      set_face_metric(b, trig, s.metric_faces, D, idx, n, L);
+      hydro_face_fluxes<D>(eos, n, L);
       for (int c = 0; c < kNumCons; ++c) {
         const double* F = L.flux[c];
         double* fo = fout[c].origin + fbase;
@@ -230,8 +171,9 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
 template <class E>
 void block_fluxes(const E& eos, const RhsSettings& s, const Groups& g, Block& b) {
   thread_local HydroLineScratch scratch;
-  for (int d = 0; d < 3; ++d)
-    if (direction_used(b, d)) sweep_direction(eos, s, g, b, d, scratch);
+  if (direction_used(b, 0)) sweep_direction<0>(eos, s, g, b, scratch);
+  if (direction_used(b, 1)) sweep_direction<1>(eos, s, g, b, scratch);
+  if (direction_used(b, 2)) sweep_direction<2>(eos, s, g, b, scratch);
 }
 
 }  // namespace
