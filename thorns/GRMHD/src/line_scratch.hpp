@@ -71,6 +71,29 @@ struct LineScratch {
   }
 };
 
+// Runs the face kernel `faces` (writing L.flux[c][0..n]) and stores L.flux[c] into out[c] + base at
+// stride `stride`; along x (stride 1) the kernel writes into out directly.
+template <int NumRec, int NumFlux, class Faces>
+inline void faces_to(LineScratch<NumRec, NumFlux>& L, double* const* out, std::ptrdiff_t base, std::ptrdiff_t stride, int n,
+                     Faces&& faces) {
+  if (stride == 1) {
+    double* own[NumFlux];
+    for (int c = 0; c < NumFlux; ++c) {
+      own[c] = L.flux[c];
+      L.flux[c] = out[c] + base;
+    }
+    faces();
+    for (int c = 0; c < NumFlux; ++c) L.flux[c] = own[c];
+    return;
+  }
+  faces();
+  for (int c = 0; c < NumFlux; ++c) {
+    const double* F = L.flux[c];
+    double* fo = out[c] + base;
+    for (int f = 0; f <= n; ++f) fo[f * stride] = F[f];
+  }
+}
+
 inline double face_value(MetricFaceInterpolation m, const double* a, int f) {
   if (m == MetricFaceInterpolation::cubic)
     return (9.0 * (a[f - 1] + a[f]) - (a[f - 2] + a[f + 1])) * (1.0 / 16.0);

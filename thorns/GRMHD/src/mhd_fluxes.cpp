@@ -136,12 +136,7 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.work[kWorkInvNext][f] = h[next] != 0 ? 1.0 / h[next] : 0.0;
           L.work[kWorkInvPrev][f] = h[prev] != 0 ? 1.0 / h[prev] : 0.0;
         }
-      mhd_face_fluxes<D>(eos, n, flux_weight, L);
-      for (int c = 0; c < kNumFluxMhd; ++c) {
-        const double* F = L.flux[c];
-        double* fo = out[c] + fbase;
-        for (int f = 0; f <= n; ++f) fo[f * fstride] = F[f];
-      }
+      faces_to(L, out, fbase, fstride, n, [&] { mhd_face_fluxes<D>(eos, n, flux_weight, L); });
     }
 }
 

@@ -30,6 +30,8 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
   for (int c = 0; c < Metric::ncomp; ++c) met[c] = b.field(g.metric, c);
   for (int c = 0; c < kNumCons; ++c) fout[c] = b.field(g.flux[D], c);
   const LineSources src = LineSources::of<E>(prim, met);
+  double* out[kNumCons];
+  for (int c = 0; c < kNumCons; ++c) out[c] = fout[c].origin;
   const std::ptrdiff_t stride = D == 0 ? 1 : D == 1 ? prim[0].sj : prim[0].sk;
   const std::ptrdiff_t fstride = D == 0 ? 1 : D == 1 ? fout[0].sj : fout[0].sk;
   // The two transverse directions.
@@ -47,12 +49,7 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
       gather_line(src, nullptr, base, stride, n, ng, L);
       for (int q = 0; q < kNumRecHydro; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
       set_face_metric(b, trig, s.metric_faces, D, idx, n, L);
-      hydro_face_fluxes<D>(eos, n, L);
-      for (int c = 0; c < kNumCons; ++c) {
-        const double* F = L.flux[c];
-        double* fo = fout[c].origin + fbase;
-        for (int f = 0; f <= n; ++f) fo[f * fstride] = F[f];
-      }
+      faces_to(L, out, fbase, fstride, n, [&] { hydro_face_fluxes<D>(eos, n, L); });
     }
 }
 
