@@ -132,7 +132,8 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
           gam = coords::christoffels(cs, x, trig.sin_centre(j), trig.cos_centre(j));
           df = metric_diagonal_derivatives(fd, gam);
         }
-        const PointMetric pm = point_metric(psi, alpha, beta, fd);
+        // Cartesian: f = 1, the same bits with one division instead of three.
+        const PointMetric pm = cartesian ? point_metric_cartesian(psi, alpha, beta) : point_metric(psi, alpha, beta, fd);
         MetricDerivatives dm;
         for (int d = 0; d < 3; ++d) {
           if (!used[d]) continue;
