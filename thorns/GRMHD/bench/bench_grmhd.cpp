@@ -5,6 +5,9 @@
 //
 //   bench_GRMHD                                   all benchmarks
 //   bench_GRMHD --zone-cost=ideal|sfho STEPS      run STEPS steps and exit (for callgrind; see README)
+//   bench_GRMHD --zone-cost=mhd-ideal|mhd-sfho STEPS   the same with the magnetic field (BM_StepMHD's)
+// Both print a checksum of the conserved variables (and face fields) after the steps: a kernel
+// change that is meant to keep the bits must keep it.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -99,7 +102,9 @@ BENCHMARK_CAPTURE(BM_Part, fluxes_sfho, std::string("sfho"), 1)->Arg(32)->Unit(b
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::strncmp(argv[i], "--zone-cost=", 12) == 0) {
-      const std::string which = argv[i] + 12;
+      std::string which = argv[i] + 12;
+      const bool magnetic = which.rfind("mhd-", 0) == 0;
+      if (magnetic) which = which.substr(4);
       const int steps = i + 1 < argc ? std::atoi(argv[i + 1]) : 2;
       std::optional<eos::EOS> e;
       try {
@@ -108,9 +113,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_GRMHD: %s\n", err.what());
         return 1;
       }
-      StarBlock sb(std::move(*e), 32, kExtent);
+      StarBlock sb(std::move(*e), 32, kExtent, magnetic);
       for (int s = 0; s < steps; ++s) sb.step(0.3 * kExtent / 32 / 0.6);
-      std::printf("%d steps of %lld cells (%s)\n", steps, static_cast<long long>(sb.cells()), which.c_str());
+      std::printf("%d steps of %lld cells (%s%s), checksum %016llx\n", steps, static_cast<long long>(sb.cells()),
+                  magnetic ? "MHD, " : "", which.c_str(), static_cast<unsigned long long>(sb.checksum()));
       return 0;
     }
   benchmark::Initialize(&argc, argv);

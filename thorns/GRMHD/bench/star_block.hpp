@@ -2,6 +2,7 @@
 // One 3D Cartesian block holding a static TOV star (octant, centre at the corner), with its metric
 // and primitives filled everywhere (ghosts too: the star is static, no exchange needed), for kernel
 // benchmarks: a full RK3 step is 3 x (con2prim, fluxes, divergence + sources, RK update).
+#include <cstdint>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -133,6 +134,18 @@ class StarBlock {
     compute_block_rhs_mhd(g_, mg_.bvec, *block_);
   }
   const con2prim::Diagnostics& diagnostics() const { return diag_; }
+  // FNV-1a over the bytes of cons (and of the face fields when magnetic), ghosts included.
+  std::uint64_t checksum() const {
+    std::uint64_t h = 1469598103934665603ull;
+    const auto add = [&](int group) {
+      const auto* p = reinterpret_cast<const unsigned char*>(block_->data(group));
+      for (std::size_t i = 0; i < block_->size(group) * sizeof(double); ++i) h = (h ^ p[i]) * 1099511628211ull;
+    };
+    add(g_.cons);
+    if (magnetic_)
+      for (int d = 0; d < 3; ++d) add(mg_.bface[d]);
+    return h;
+  }
 
  private:
   void fill_star() {

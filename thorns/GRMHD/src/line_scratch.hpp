@@ -1,14 +1,34 @@
 #pragma once
 // Contiguous line buffers of one direction sweep (cells with ghosts, face states, metric, fluxes),
-// shared by the hydro and the MHD sweeps; and the metric at a face from the cell values of a line.
+// shared by the hydro and the MHD sweeps: the gather of a line (gather_line) and the metric at its
+// faces (set_face_metric), both stored as one array per quantity so that the face loops vectorise.
 #include <vector>
 
+#include "GRMHD/face_thermo.hpp"
 #include "GRMHD/valencia.hpp"
 #include "groups.hpp"
+#include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd {
 
 enum class MetricFaceInterpolation { linear, cubic };
+
+// The reconstructed variables every sweep shares, in this order; the MHD sweep appends its two
+// transverse field components.
+enum LineVariable : int { kRecRho = 0, kRecWv1 = 1, kRecThermal = 4, kRecYe = 5 };
+inline constexpr int kNumRecHydro = 6;
+
+// The metric at the faces of a line (f = 0..n): what the face states and fluxes need of it.
+struct FaceMetricLine {
+  double* psi6;      // psi^6, the densitisation of the fluxes
+  double* alpha;
+  double* beta[3];
+  double* g_dn[3];   // gamma_ii = psi^4 f_ii
+  double* g_up_d;    // gamma^dd of the sweep direction d
+};
+inline constexpr int kFaceMetricArrays = 9;
+// Per-face work arrays of a face kernel (the thermodynamics of both sides, ...).
+inline constexpr int kNumWork = 12;
 
 template <int NumRec, int NumFlux>
 struct LineScratch {
@@ -20,13 +40,15 @@ struct LineScratch {
   double* met[Metric::ncomp];  // cell metric along the line
   double* flux[NumFlux];       // face fluxes (weighted)
   double* ppm;                 // reconstruction scratch
+  FaceMetricLine face;         // face metric
+  double* work[kNumWork];      // faces 0..n
   int ng = 0;
   void ensure(int n, int ngh) {
     const int len = n + 2 * ngh + 4;
     if (len <= cap && ngh == ng) return;
     cap = len;
     ng = ngh;
-    const int arrays = NumRec * 3 + Metric::ncomp + NumFlux + 1;
+    const int arrays = NumRec * 3 + Metric::ncomp + NumFlux + 1 + kFaceMetricArrays + kNumWork;
     storage.assign(static_cast<std::size_t>(arrays) * static_cast<std::size_t>(len), 0.0);
     double* p = storage.data();
     auto take = [&](int offset) {
@@ -40,13 +62,140 @@ struct LineScratch {
     for (double*& a : met) a = take(ngh + 1);
     for (double*& a : flux) a = take(1);
     ppm = take(1);
+    face.psi6 = take(1);
+    face.alpha = take(1);
+    for (double*& a : face.beta) a = take(1);
+    for (double*& a : face.g_dn) a = take(1);
+    face.g_up_d = take(1);
+    for (double*& a : work) a = take(1);
   }
 };
+
+// Runs the face kernel `faces` (writing L.flux[c][0..n]) and stores L.flux[c] into out[c] + base at
+// stride `stride`; along x (stride 1) the kernel writes into out directly.
+template <int NumRec, int NumFlux, class Faces>
+inline void faces_to(LineScratch<NumRec, NumFlux>& L, double* const* out, std::ptrdiff_t base, std::ptrdiff_t stride, int n,
+                     Faces&& faces) {
+  if (stride == 1) {
+    double* own[NumFlux];
+    for (int c = 0; c < NumFlux; ++c) {
+      own[c] = L.flux[c];
+      L.flux[c] = out[c] + base;
+    }
+    faces();
+    for (int c = 0; c < NumFlux; ++c) L.flux[c] = own[c];
+    return;
+  }
+  faces();
+  for (int c = 0; c < NumFlux; ++c) {
+    const double* F = L.flux[c];
+    double* fo = out[c] + base;
+    for (int f = 0; f <= n; ++f) fo[f * stride] = F[f];
+  }
+}
 
 inline double face_value(MetricFaceInterpolation m, const double* a, int f) {
   if (m == MetricFaceInterpolation::cubic)
     return (9.0 * (a[f - 1] + a[f]) - (a[f - 2] + a[f + 1])) * (1.0 / 16.0);
   return 0.5 * (a[f - 1] + a[f]);
+}
+
+// The primitive and metric fields a line gather reads, resolved once per sweep.
+struct LineSources {
+  const double* rho;
+  const double* W;
+  const double* vel[3];
+  const double* thermal;  // p (ideal gas) or T (face_thermo.hpp)
+  const double* ye;
+  const double* met[Metric::ncomp];
+  template <class E>
+  static LineSources of(const Field* prim, const Field* metric) {
+    LineSources s;
+    s.rho = prim[Prim::idx::rho].origin;
+    s.W = prim[Prim::idx::W].origin;
+    s.vel[0] = prim[Prim::idx::vel].origin;
+    s.vel[1] = prim[Prim::idx::vel2].origin;
+    s.vel[2] = prim[Prim::idx::vel3].origin;
+    s.thermal = (reconstructs_pressure<E> ? prim[Prim::idx::press] : prim[Prim::idx::temperature]).origin;
+    s.ye = prim[Prim::idx::Ye].origin;
+    for (int c = 0; c < Metric::ncomp; ++c) s.met[c] = metric[c].origin;
+    return s;
+  }
+};
+
+// Copies the line at offset `base` (stride `stride`, n cells and ng ghosts each side) into L:
+// rho, W v^1..3, thermal, Ye into cell[0..5], the metric into met; the NumRec - 6 fields of `extra`
+// (the MHD sweep's transverse B; nullptr for the hydro sweep) into cell[6..], read at the same points.
+template <int NumRec, int NumFlux>
+inline void gather_line(const LineSources& src, const double* const* extra, std::ptrdiff_t base, std::ptrdiff_t stride,
+                        int n, int ng, LineScratch<NumRec, NumFlux>& L) {
+  constexpr int NumExtra = NumRec - kNumRecHydro;
+  static_assert(NumExtra >= 0, "the extra variables follow the hydro ones");
+  const double* pr = src.rho + base;
+  const double* pw = src.W + base;
+  const double* pv0 = src.vel[0] + base;
+  const double* pv1 = src.vel[1] + base;
+  const double* pv2 = src.vel[2] + base;
+  const double* pth = src.thermal + base;
+  const double* pye = src.ye + base;
+  for (int m = -ng; m < n + ng; ++m) {
+    const std::ptrdiff_t o = m * stride;
+    const double W = pw[o];
+    L.cell[0][m] = pr[o];
+    L.cell[1][m] = W * pv0[o];
+    L.cell[2][m] = W * pv1[o];
+    L.cell[3][m] = W * pv2[o];
+    L.cell[4][m] = pth[o];
+    L.cell[5][m] = pye[o];
+  }
+  for (int e = 0; e < NumExtra; ++e) {
+    const double* px = extra[e] + base;
+    double* out = L.cell[kNumRecHydro + e];
+    for (int m = -ng; m < n + ng; ++m) out[m] = px[m * stride];
+  }
+  for (int c = 0; c < Metric::ncomp; ++c) {
+    const double* pm = src.met[c] + base;
+    double* out = L.met[c];
+    for (int m = -ng; m < n + ng; ++m) out[m] = pm[m * stride];
+  }
+}
+
+// The face metric of the line in direction d whose cells have the transverse indices of `idx`:
+// psi, alpha, beta interpolated to the faces (linear or cubic), psi^6, gamma_ii = psi^4 f_ii and
+// gamma^dd, with the bits of point_metric / point_metric_cartesian (valencia.hpp).
+template <int NumRec, int NumFlux>
+inline void set_face_metric(const Block& b, const PolarTrig& trig, MetricFaceInterpolation interp, int d,
+                            const int* idx, int n, LineScratch<NumRec, NumFlux>& L) {
+  const FaceMetricLine& fm = L.face;
+  const double* mpsi = L.met[Metric::idx::psi];
+  const double* malpha = L.met[Metric::idx::alpha];
+  const double* mbeta[3] = {L.met[Metric::idx::beta], L.met[Metric::idx::beta2], L.met[Metric::idx::beta3]};
+  const auto fill = [&](auto face) {
+    for (int f = 0; f <= n; ++f) {
+      const double psi = face(mpsi, f);
+      const double p2 = psi * psi;
+      const double psi4 = p2 * p2;
+      fm.psi6[f] = p2 * p2 * p2;
+      fm.alpha[f] = face(malpha, f);
+      for (int c = 0; c < 3; ++c) fm.beta[c][f] = face(mbeta[c], f);
+      for (int c = 0; c < 3; ++c) fm.g_dn[c][f] = psi4;
+    }
+  };
+  if (interp == MetricFaceInterpolation::cubic)
+    fill([](const double* a, int f) { return (9.0 * (a[f - 1] + a[f]) - (a[f - 2] + a[f + 1])) * (1.0 / 16.0); });
+  else
+    fill([](const double* a, int f) { return 0.5 * (a[f - 1] + a[f]); });
+  if (b.coordinates == CoordinateSystem::cartesian) {
+    for (int f = 0; f <= n; ++f) fm.g_up_d[f] = 1.0 / fm.g_dn[d][f];
+    return;
+  }
+  Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
+  for (int f = 0; f <= n; ++f) {
+    x[d] = b.face_coordinate(d, f);
+    const Point3 fd = coords::metric_diagonal(b.coordinates, x, d == 1 ? trig.sin_face(f) : trig.sin_centre(idx[1]));
+    for (int c = 0; c < 3; ++c) fm.g_dn[c][f] *= fd[c];
+    fm.g_up_d[f] = 1.0 / fm.g_dn[d][f];
+  }
 }
 
 }  // namespace remnant::grmhd

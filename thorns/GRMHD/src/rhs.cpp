@@ -4,6 +4,7 @@
 // exact face areas and volumes, plus sources, cell by cell with i fastest.
 #include "rhs.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -11,107 +12,57 @@
 #include "GRMHD/sources.hpp"
 #include "GRMHD/sources_mhd.hpp"
 #include "GRMHD/valencia.hpp"
+#include "face_kernel.hpp"
 #include "line_scratch.hpp"
 #include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd {
 namespace {
 
-// Reconstructed variables: rho, W v^1, W v^2, W v^3, thermal (p or T), Ye.
-inline constexpr int kNumRec = 6;
-using HydroLineScratch = LineScratch<kNumRec, kNumCons>;
+using HydroLineScratch = LineScratch<kNumRecHydro, kNumCons>;
 
-template <class E>
-void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, int d, HydroLineScratch& L) {
-  const int n = b.n[d], ng = b.ng[d];
+template <int D, class E>
+void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, HydroLineScratch& L) {
+  const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
   Field prim[Prim::ncomp], met[Metric::ncomp], fout[kNumCons];
   for (int c = 0; c < Prim::ncomp; ++c) prim[c] = b.field(g.prim, c);
   for (int c = 0; c < Metric::ncomp; ++c) met[c] = b.field(g.metric, c);
-  for (int c = 0; c < kNumCons; ++c) fout[c] = b.field(g.flux[d], c);
-  const std::ptrdiff_t stride = d == 0 ? 1 : d == 1 ? prim[0].sj : prim[0].sk;
-  const std::ptrdiff_t fstride = d == 0 ? 1 : d == 1 ? fout[0].sj : fout[0].sk;
+  for (int c = 0; c < kNumCons; ++c) fout[c] = b.field(g.flux[D], c);
+  const LineSources src = LineSources::of<E>(prim, met);
+  double* out[kNumCons];
+  for (int c = 0; c < kNumCons; ++c) out[c] = fout[c].origin;
+  const std::ptrdiff_t stride = D == 0 ? 1 : D == 1 ? prim[0].sj : prim[0].sk;
+  const std::ptrdiff_t fstride = D == 0 ? 1 : D == 1 ? fout[0].sj : fout[0].sk;
   // The two transverse directions.
-  const int a = d == 0 ? 1 : 0, c2 = d == 2 ? 1 : 2;
-  const CoordinateSystem cs = b.coordinates;
-  const bool cartesian = cs == CoordinateSystem::cartesian;
+  constexpr int a = D == 0 ? 1 : 0, c2 = D == 2 ? 1 : 2;
   const PolarTrig trig(b);
 
   for (int ic = 0; ic < b.n[c2]; ++ic)
     for (int ia = 0; ia < b.n[a]; ++ia) {
       int idx[3];
-      idx[d] = 0;
+      idx[D] = 0;
       idx[a] = ia;
       idx[c2] = ic;
       const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
       const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
-      // Gather.
-      {
-        const double* pr = prim[Prim::idx::rho].origin + base;
-        const double* pw = prim[Prim::idx::W].origin + base;
-        const double* pv[3] = {prim[Prim::idx::vel].origin + base, prim[Prim::idx::vel2].origin + base, prim[Prim::idx::vel3].origin + base};
-        const double* pth = (reconstructs_pressure<E> ? prim[Prim::idx::press] : prim[Prim::idx::temperature]).origin + base;
-        const double* pye = prim[Prim::idx::Ye].origin + base;
-        for (int m = -ng; m < n + ng; ++m) {
-          const std::ptrdiff_t o = m * stride;
-          const double W = pw[o];
-          L.cell[0][m] = pr[o];
-          L.cell[1][m] = W * pv[0][o];
-          L.cell[2][m] = W * pv[1][o];
-          L.cell[3][m] = W * pv[2][o];
-          L.cell[4][m] = pth[o];
-          L.cell[5][m] = pye[o];
-        }
-        for (int c = 0; c < Metric::ncomp; ++c) {
-          const double* pm = met[c].origin + base;
-          double* out = L.met[c];
-          for (int m = -ng; m < n + ng; ++m) out[m] = pm[m * stride];
-        }
-      }
-      for (int q = 0; q < kNumRec; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
-
-      // Transverse coordinates of this line (for f_ij at faces).
-      Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
-      std::array<double, 3> fd{1.0, 1.0, 1.0};
-      for (int f = 0; f <= n; ++f) {
-        const double psi = face_value(s.metric_faces, L.met[Metric::idx::psi], f);
-        const double alpha = face_value(s.metric_faces, L.met[Metric::idx::alpha], f);
-        std::array<double, 3> beta{face_value(s.metric_faces, L.met[Metric::idx::beta], f),
-                                   face_value(s.metric_faces, L.met[Metric::idx::beta2], f),
-                                   face_value(s.metric_faces, L.met[Metric::idx::beta3], f)};
-        if (!cartesian) {
-          x[d] = b.face_coordinate(d, f);
-          fd = coords::metric_diagonal(cs, x, d == 1 ? trig.sin_face(f) : trig.sin_centre(idx[1]));
-        }
-        const PointMetric pm = cartesian ? point_metric_cartesian(psi, alpha, beta) : point_metric(psi, alpha, beta, fd);
-        FluidState sl, sr;
-        sl.rho = L.left[0][f];
-        sr.rho = L.right[0][f];
-        sl.ye = L.left[5][f];
-        sr.ye = L.right[5][f];
-        set_velocity_from_wv(sl, pm, L.left[1][f], L.left[2][f], L.left[3][f]);
-        set_velocity_from_wv(sr, pm, L.right[1][f], L.right[2][f], L.right[3][f]);
-        complete_face_thermo(eos, sl, L.left[4][f]);
-        complete_face_thermo(eos, sr, L.right[4][f]);
-        double ul[kNumCons], ur[kNumCons], fl[kNumCons], fr[kNumCons], fh[kNumCons];
-        conserved(sl, ul);
-        conserved(sr, ur);
-        flux(d, sl, pm, ul, fl);
-        flux(d, sr, pm, ur, fr);
-        double lml, lpl, lmr, lpr;
-        characteristic_speeds(d, sl, pm, lml, lpl);
-        characteristic_speeds(d, sr, pm, lmr, lpr);
-        hll_flux(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
-        const double p2 = psi * psi;
-        const double psi6 = p2 * p2 * p2;
-        for (int c = 0; c < kNumCons; ++c) L.flux[c][f] = fh[c] * psi6;
-      }
-      for (int c = 0; c < kNumCons; ++c) {
-        const double* F = L.flux[c];
-        double* fo = fout[c].origin + fbase;
-        for (int f = 0; f <= n; ++f) fo[f * fstride] = F[f];
-      }
+      gather_line(src, nullptr, base, stride, n, ng, L);
+      for (int q = 0; q < kNumRecHydro; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
+      set_face_metric(b, trig, s.metric_faces, D, idx, n, L);
+      faces_to(L, out, fbase, fstride, n, [&] { hydro_face_fluxes<D>(eos, n, L); });
     }
+}
+
+// The flux divergence of pass 2 for a row of cells (i fastest), summed as the per-cell loop did:
+// from 0.0, d = 0, 1, 2, each term (A+ F+ - A- F-) / V subtracted; one loop per direction and
+// component, which vectorises. Along x the face factors and volumes change with i.
+void subtract_divergence_x(double* __restrict out, const double* __restrict F, const double* __restrict area,
+                           const double* __restrict volume, int n) {
+  for (int i = 0; i < n; ++i) out[i] -= (area[i + 1] * F[i + 1] - area[i] * F[i]) * (1.0 / volume[i]);
+}
+void subtract_divergence_transverse(double* __restrict out, const double* __restrict F_plus,
+                                    const double* __restrict F_minus, double ap, double am, double iv, int n) {
+  for (int i = 0; i < n; ++i) out[i] -= (ap * F_plus[i] - am * F_minus[i]) * iv;
 }
 
 // Pass 2 over the cells of a block, i fastest. Mhd: the magnetised sources with the cell-centred
@@ -150,22 +101,29 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
   Point3 fd{1.0, 1.0, 1.0};
   Christoffels gam{};
   const PolarTrig trig(b);
+  thread_local std::vector<double> row_storage;
+  row_storage.resize(static_cast<std::size_t>(kNumCons) * static_cast<std::size_t>(b.n[0]));
+  double* row[kNumCons];
+  for (int c = 0; c < kNumCons; ++c) row[c] = row_storage.data() + static_cast<std::size_t>(c) * b.n[0];
   for (int k = 0; k < b.n[2]; ++k)
-    for (int j = 0; j < b.n[1]; ++j)
+    for (int j = 0; j < b.n[1]; ++j) {
+      // Flux divergence: (A+ F+ - A- F-) / V with A/V reduced to the 1D factors of direction d.
+      for (int c = 0; c < kNumCons; ++c) std::fill(row[c], row[c] + b.n[0], 0.0);
+      for (int d = 0; d < 3; ++d) {
+        if (!used[d]) continue;
+        const std::ptrdiff_t fo = j * flux[d][0].sj + k * flux[d][0].sk;
+        const int id = d == 1 ? j : k;
+        for (int c = 0; c < kNumCons; ++c) {
+          const double* F = flux[d][c].origin + fo;
+          if (d == 0) subtract_divergence_x(row[c], F, ff[0], vw[0], b.n[0]);
+          else subtract_divergence_transverse(row[c], F + fst[d], F, ff[d][id + 1], ff[d][id], 1.0 / vw[d][id], b.n[0]);
+        }
+      }
       for (int i = 0; i < b.n[0]; ++i) {
         const int id[3] = {i, j, k};
         const std::ptrdiff_t o = i + j * met[0].sj + k * met[0].sk;
-        double out[kNumCons] = {0, 0, 0, 0, 0, 0};
-        // Flux divergence: (A+ F+ - A- F-) / V with A/V reduced to the 1D factors of direction d.
-        for (int d = 0; d < 3; ++d) {
-          if (!used[d]) continue;
-          const std::ptrdiff_t fo = i + j * flux[d][0].sj + k * flux[d][0].sk;
-          const double ap = ff[d][id[d] + 1], am = ff[d][id[d]], iv = 1.0 / vw[d][id[d]];
-          for (int c = 0; c < kNumCons; ++c) {
-            const double* F = flux[d][c].origin + fo;
-            out[c] -= (ap * F[fst[d]] - am * F[0]) * iv;
-          }
-        }
+        double out[kNumCons];
+        for (int c = 0; c < kNumCons; ++c) out[c] = row[c][i];
         const double psi = met[Metric::idx::psi].origin[o], alpha = met[Metric::idx::alpha].origin[o];
         const std::array<double, 3> beta{met[Metric::idx::beta].origin[o], met[Metric::idx::beta2].origin[o], met[Metric::idx::beta3].origin[o]};
         if (!cartesian) {
@@ -174,7 +132,8 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
           gam = coords::christoffels(cs, x, trig.sin_centre(j), trig.cos_centre(j));
           df = metric_diagonal_derivatives(fd, gam);
         }
-        const PointMetric pm = point_metric(psi, alpha, beta, fd);
+        // Cartesian: f = 1, the same bits with one division instead of three.
+        const PointMetric pm = cartesian ? point_metric_cartesian(psi, alpha, beta) : point_metric(psi, alpha, beta, fd);
         MetricDerivatives dm;
         for (int d = 0; d < 3; ++d) {
           if (!used[d]) continue;
@@ -225,13 +184,15 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
         rhs[kDYe].origin[o] = out[kDYe];
         for (int c = kS1; c <= kTau; ++c) rhs[c].origin[o] = out[c] + psi6 * src[c];
       }
+    }
 }
 
 template <class E>
 void block_fluxes(const E& eos, const RhsSettings& s, const Groups& g, Block& b) {
   thread_local HydroLineScratch scratch;
-  for (int d = 0; d < 3; ++d)
-    if (direction_used(b, d)) sweep_direction(eos, s, g, b, d, scratch);
+  if (direction_used(b, 0)) sweep_direction<0>(eos, s, g, b, scratch);
+  if (direction_used(b, 1)) sweep_direction<1>(eos, s, g, b, scratch);
+  if (direction_used(b, 2)) sweep_direction<2>(eos, s, g, b, scratch);
 }
 
 }  // namespace

@@ -2,7 +2,8 @@
 // One-dimensional reconstruction of cell averages to the two sides of every face of a line.
 // Convention: q[c] is cell c (ghosts at negative c and c >= n); face f lies between cells f-1 and f.
 // left[f] is the state just left of face f (right edge of cell f-1), right[f] the state just right
-// of it (left edge of cell f), for f = 0..n. PPM needs 3 ghost cells, MC and minmod need 2.
+// of it (left edge of cell f), for f = 0..n. PPM needs 3 ghost cells, MC and minmod need 2, and PPM
+// writes right[-1] and left[n + 1] as scratch (the arrays need one slot more on each side).
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -46,7 +47,9 @@ inline void reconstruct_plm(const double* q, double* left, double* right, int n)
 // PPM of Colella & Woodward (1984): fourth-order face values limited to the neighbouring cells,
 // then the parabola's monotonicity constraints (their eqs. 1.10). No steepening or flattening.
 // `face` is scratch for n + 3 values.
-inline void reconstruct_ppm(const double* q, double* left, double* right, int n, double* face) {
+// (__restrict: the four arrays never overlap, which spares the vectorised loops their overlap checks.)
+inline void reconstruct_ppm(const double* __restrict q, double* __restrict left, double* __restrict right, int n,
+                            double* __restrict face) {
   double* a = face + 1;  // a[f] for f = -1 .. n+1
   for (int f = -1; f <= n + 1; ++f) {
     const double lo = q[f - 1], hi = q[f];
@@ -54,18 +57,18 @@ inline void reconstruct_ppm(const double* q, double* left, double* right, int n,
     v = std::clamp(v, std::min(lo, hi), std::max(lo, hi));
     a[f] = v;
   }
+  // The monotonicity constraints as selects (the values of the branches of CW84 eq. 1.10), so that
+  // the loop vectorises; right[-1] and left[n + 1] are scratch (LineScratch allocates them).
   for (int c = -1; c <= n; ++c) {
     const double qc = q[c];
-    double aL = a[c], aR = a[c + 1];
-    if ((aR - qc) * (qc - aL) <= 0) {
-      aL = aR = qc;  // local extremum: flat
-    } else {
-      const double d = aR - aL, m6 = 6.0 * (qc - 0.5 * (aL + aR));
-      if (d * m6 > d * d) aL = 3.0 * qc - 2.0 * aR;
-      else if (-d * d > d * m6) aR = 3.0 * qc - 2.0 * aL;
-    }
-    if (c >= 0) right[c] = aL;
-    if (c < n) left[c + 1] = aR;
+    const double aL = a[c], aR = a[c + 1];
+    const bool extremum = (aR - qc) * (qc - aL) <= 0;  // local extremum: flat
+    const double d = aR - aL, m6 = 6.0 * (qc - 0.5 * (aL + aR));
+    // Never both: d m6 > d^2 >= 0 > -d^2 (and neither for NaN), so the branches' else-if order is kept.
+    const bool steep_left = d * m6 > d * d;
+    const bool steep_right = -d * d > d * m6;
+    right[c] = extremum ? qc : steep_left ? 3.0 * qc - 2.0 * aR : aL;
+    left[c + 1] = extremum ? qc : steep_right ? 3.0 * qc - 2.0 * aL : aR;
   }
 }
 
