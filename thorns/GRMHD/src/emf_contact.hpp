@@ -25,7 +25,8 @@ struct ContactEmfFields {
   ContactEmfFields(const MhdGroups& mg, const Groups& g, Block& b);
 };
 
-// The upwind-weighted mix of x (upwind = column -1 for positive mass flux) and y (column 0).
+// The value upwind of a face with this mass flux: lower (column or row -1) where it is positive,
+// upper (0) where negative, their mean where it is zero.
 inline double contact_upwind(double mass_flux, double lower, double upper) {
   return mass_flux > 0 ? lower : mass_flux < 0 ? upper : 0.5 * (lower + upper);
 }
