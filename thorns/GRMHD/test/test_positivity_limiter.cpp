@@ -76,7 +76,7 @@ struct Line {
   }
 };
 
-TEST(PositivityLimiter, KeepsTheDrainedCellAboveEpsilonWhereTheUnlimitedUpdateIsNegative) {
+TEST(GRMHDPositivityLimiter, KeepsTheDrainedCellAboveEpsilonWhereTheUnlimitedUpdateIsNegative) {
   Line line;
   const double before = line.min_updated_density();
   std::vector<std::vector<double>> unlimited;
@@ -103,7 +103,7 @@ TEST(PositivityLimiter, KeepsTheDrainedCellAboveEpsilonWhereTheUnlimitedUpdateIs
   }
 }
 
-TEST(PositivityLimiter, BlocksSharingTheLimitedFaceAgree) {
+TEST(GRMHDPositivityLimiter, BlocksSharingTheLimitedFaceAgree) {
   // The dip's upper face is the face shared by the two blocks of 16 cells: both limit it alike.
   Line line;
   for (Block* b : line.run.blocks()) limit_block_mass_fluxes(line.g, kDt, kEpsilon, *b);
@@ -115,7 +115,7 @@ TEST(PositivityLimiter, BlocksSharingTheLimitedFaceAgree) {
   EXPECT_EQ(f_lo, f_hi);
 }
 
-TEST(PositivityLimiter, ThetaIsOneWhereTheHighOrderTermStaysAboveTheFloor) {
+TEST(GRMHDPositivityLimiter, ThetaIsOneWhereTheHighOrderTermStaysAboveTheFloor) {
   EXPECT_EQ(positivity_theta(1.0, 1.0, 0.4, 0.4, 0.3, 0.1, 1e-12), 1.0);
   // Cell m would drop to 1 - 0.4 * 3 < 0: theta brings it to the floor exactly.
   const double t = positivity_theta(1.0, 1.0, 0.4, 0.4, 3.0, 0.5, 1e-12);
