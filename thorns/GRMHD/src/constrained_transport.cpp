@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <stdexcept>
 
 #include "GRMHD/reconstruction.hpp"
 #include "HydroBase/magnetic_field.hpp"
+#include "emf_contact.hpp"
 #include "groups.hpp"
 #include "remnant/cell_geometry.hpp"
 
@@ -74,6 +77,13 @@ inline void face_values_along(const Block& blk, const Strided& bf, int a, int b,
 }  // namespace
 
 void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b) {
+  if (scheme == EmfScheme::uct_contact) throw std::logic_error("edge_emfs: uct_contact needs the hydro groups");
+  edge_emfs(scheme, g, Groups{}, b);
+}
+
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block& b) {
+  std::optional<ContactEmfFields> contact;
+  if (scheme == EmfScheme::uct_contact) contact.emplace(g, hydro, b);
   bool used[3];
   for (int d = 0; d < 3; ++d) used[d] = direction_used(b, d);
   const bool curvilinear = b.coordinates != CoordinateSystem::cartesian;
@@ -104,6 +114,11 @@ void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b) {
               face_values_along(b, Bb, a, bb, id, curvilinear, qb);
               face_values_along(b, Ba, bb, a, id, curvilinear, qa);
               emf = -upwind_part(cta, oa, cta[0].stride(bb), qb) + upwind_part(ctb, ob, ctb[0].stride(a), qa);
+            } else if (scheme == EmfScheme::uct_contact) {
+              const std::ptrdiff_t sb = cta[0].stride(bb), sa = ctb[0].stride(a);
+              const double ea[2] = {-cta[kFluxNext][oa - sb], -cta[kFluxNext][oa]};
+              const double eb[2] = {ctb[kFluxPrev][ob - sa], ctb[kFluxPrev][ob]};
+              emf = contact_emf(*contact, a, bb, id, ea, eb);
             } else {
               const std::ptrdiff_t sb = cta[0].stride(bb), sa = ctb[0].stride(a);
               emf = 0.25 * (-cta[kFluxNext][oa - sb] - cta[kFluxNext][oa] + ctb[kFluxPrev][ob - sa] + ctb[kFluxPrev][ob]);

@@ -9,6 +9,7 @@
 // sqrt f = g_a g_b g_c along the edge is exactly face_factor_a * face_factor_b * volume_weight_c,
 // zero on the axis and at the origin. Then d/dt (area * Bface_a) = -(circulation of E around the
 // face), so the discrete divergence of every cell stays what it was to round-off.
+#include "groups.hpp"
 #include "mhd_groups.hpp"
 #include "remnant/grid.hpp"
 
@@ -22,6 +23,11 @@ namespace remnant::grmhd {
 //               adjacent in each direction;
 //   arithmetic: the mean of the induction fluxes of the four faces around the edge (Balsara & Spicer 1999).
 // Where one transverse direction of an edge is unused, both reduce to the 1D HLL flux of the other.
+//   uct_contact: Gardiner & Stone 2005 (emf_contact.hpp): the mean of the four face EMFs plus the
+//               face-to-cell gradients of E upwinded by the faces' mass fluxes; needs the hydro
+//               groups (prim, metric, flux_x/y/z of the same call).
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block& b);
+// The same for uct_hll and arithmetic (which need no hydro groups).
 void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b);
 
 // Bface_rhs of the interior faces (block faces included) from the EMFs; zero on faces of zero area.

@@ -15,7 +15,7 @@ namespace remnant::grmhd {
 enum CtComponent : int { kAlphaPlus = 0, kAlphaMinus, kVtLeft, kVtRight, kFluxNext, kFluxPrev };
 inline constexpr int kNumCt = 6;
 
-enum class EmfScheme { uct_hll, arithmetic };
+enum class EmfScheme { uct_hll, arithmetic, uct_contact };
 
 struct MhdGroups {
   std::array<int, 3> bface{-1, -1, -1}, bface_rhs{-1, -1, -1}, ct{-1, -1, -1}, emf{-1, -1, -1};

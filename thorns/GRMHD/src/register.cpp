@@ -9,6 +9,7 @@
 #include "constrained_transport.hpp"
 #include "mass_budget.hpp"
 #include "mhd_fluxes.hpp"
+#include "positivity_limiter.hpp"
 #include "rhs.hpp"
 #include "alfven_wave.hpp"
 #include "shock_tube.hpp"
@@ -46,6 +47,7 @@ void check_field_parameters(const Context& ctx) {
 
 void check_parameters(Context& ctx) {
   check_field_parameters(ctx);
+  check_positivity_limiter(ctx);
   const RhsSettings s = rhs_settings(ctx);
   for (Block* b : ctx.grid().local_blocks())
     for (int d = 0; d < 3; ++d)
@@ -61,6 +63,7 @@ void calc_rhs(Context& ctx) {
   const RhsSettings s = rhs_settings(ctx);
   const Groups g = Groups::of(ctx);
   for (Block* b : ctx.grid().local_blocks()) compute_block_fluxes(eos, s, g, *b);
+  apply_positivity_limiter(ctx, g);
   // Refluxing: coarse faces shared with finer blocks take the fine fluxes (no-op on a uniform grid).
   std::vector<int> faces;
   for (int d = 0; d < ctx.grid().dimension(); ++d) faces.push_back(g.flux[d]);
@@ -82,9 +85,12 @@ void calc_rhs_mhd(Context& ctx) {
   const RhsSettings s = rhs_settings(ctx);
   const Groups g = Groups::of(ctx);
   const MhdGroups mg = MhdGroups::of(ctx);
-  const EmfScheme scheme =
-      ctx.param<std::string>("GRMHD", "emf") == "arithmetic" ? EmfScheme::arithmetic : EmfScheme::uct_hll;
+  const std::string& emf = ctx.param<std::string>("GRMHD", "emf");
+  const EmfScheme scheme = emf == "arithmetic"    ? EmfScheme::arithmetic
+                           : emf == "uct_contact" ? EmfScheme::uct_contact
+                                                  : EmfScheme::uct_hll;
   for (Block* b : ctx.grid().local_blocks()) compute_block_fluxes_mhd(eos, s, g, mg, *b);
+  apply_positivity_limiter(ctx, g);
   std::vector<int> faces;
   for (int d = 0; d < ctx.grid().dimension(); ++d) faces.push_back(g.flux[d]);
   for (int d = ctx.grid().dimension(); d < 3; ++d)
@@ -93,7 +99,7 @@ void calc_rhs_mhd(Context& ctx) {
       std::fill(b->data(mg.ct[d]), b->data(mg.ct[d]) + b->size(mg.ct[d]), 0.0);
     }
   ctx.grid().correct_fluxes(faces);
-  for (Block* b : ctx.grid().local_blocks()) edge_emfs(scheme, mg, *b);
+  for (Block* b : ctx.grid().local_blocks()) edge_emfs(scheme, mg, g, *b);
   ctx.grid().correct_edges(mg.emf);
   const DomainCells dom = DomainCells::of(ctx);
   for (Block* b : ctx.grid().local_blocks()) {

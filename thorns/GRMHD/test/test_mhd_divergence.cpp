@@ -57,6 +57,7 @@ TEST(MHDDivergence, Cartesian1D) {
 
 TEST(MHDDivergence, Cartesian2DRefinedUct) { expect_divergence_free(kCartesian2D, "uct_hll"); }
 TEST(MHDDivergence, Cartesian2DRefinedArithmetic) { expect_divergence_free(kCartesian2D, "arithmetic"); }
+TEST(MHDDivergence, Cartesian2DRefinedContact) { expect_divergence_free(kCartesian2D, "uct_contact"); }
 
 TEST(MHDDivergence, Cartesian3DRefined) {
   expect_divergence_free({"Cartesian 3D, refined box",
@@ -65,6 +66,15 @@ TEST(MHDDivergence, Cartesian3DRefined) {
                               ", max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.1, 0.2, 0.1, 0.2, 0.1, 0.2]",
                           0.05},
                          "uct_hll", 6);
+}
+
+TEST(MHDDivergence, Cartesian3DRefinedContact) {
+  expect_divergence_free({"Cartesian 3D, refined box",
+                          "dimension: 3, ncells: [16, 16, 16], block_size: [8, 8, 8], xmin: [0, 0, 0], xmax: [1, 1, 1], "
+                          "ghost_zones: 3, " + kOutflow +
+                              ", max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.1, 0.2, 0.1, 0.2, 0.1, 0.2]",
+                          0.05},
+                         "uct_contact", 6);
 }
 
 // Cylindrical (R, z, phi): the axis R = 0 (zero-area faces, zero-length edges), phi periodic in 3D.
@@ -76,6 +86,16 @@ TEST(MHDDivergence, Cylindrical2DRefined) {
                           "max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.0, 0.2, -0.2, 0.1, -10, 10]",
                           0.1},
                          "uct_hll");
+}
+
+TEST(MHDDivergence, Spherical2DRefinedContact) {
+  expect_divergence_free({"spherical 2D, refined box",
+                          "coordinates: spherical, dimension: 2, ncells: [32, 32, 1], block_size: [8, 8, 1], "
+                          "xmin: [0, 0, 0], xmax: [1, 3.141592653589793, 1], ghost_zones: 3, "
+                          "boundary_lower: [origin, axis, outflow], boundary_upper: [outflow, axis, outflow], "
+                          "max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.5, 0.8, 0.0, 0.5, -10, 10]",
+                          0.1},
+                         "uct_contact");
 }
 
 TEST(MHDDivergence, Cylindrical3D) {
