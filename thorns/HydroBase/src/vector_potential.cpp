@@ -22,12 +22,15 @@ double edge_integral(const Block& b, const CovariantPotential& A, int a, int cel
                      const std::vector<double>& nodes, const std::vector<double>& weights) {
   const auto ua = static_cast<std::size_t>(a);
   const CoordinateSystem c = b.coordinates;
+  // x[a] is the integration variable, not yet set: only the edge's fixed coordinates say whether
+  // it lies on the axis (an R or theta edge crosses it, and keeps its phi).
   if (c == CoordinateSystem::cylindrical) {
-    if (x[0] == 0.0 && a == 2) return 0.0;  // a circle of radius 0
-    if (x[0] == 0.0) x[2] = 0.0;            // along the axis: one value whatever phi
+    const bool axis = a != 0 && x[0] == 0.0;
+    if (axis && a == 2) return 0.0;  // a circle of radius 0
+    if (axis) x[2] = 0.0;            // along the axis: one value whatever phi
   } else if (c == CoordinateSystem::spherical) {
     if (x[0] == 0.0 && a != 0) return 0.0;  // the origin
-    const bool axis = on_polar_axis(x[1]);
+    const bool axis = a != 1 && on_polar_axis(x[1]);
     if (axis && a == 2) return 0.0;
     if (axis) x[2] = 0.0;
   }
