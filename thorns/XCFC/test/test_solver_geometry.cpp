@@ -49,8 +49,9 @@ TEST(XCFCSolverGeometry, ChristoffelsAreThoseOfTheCoordinates) {
     const CompositeMultigrid mg(lay);
     const SolverGeometry geo(mg);
     EXPECT_TRUE(geo.current_for(mg));
+    EXPECT_EQ(geo.parts(), mg.parts());
     EXPECT_FALSE(geo.current_for(CompositeMultigrid(c.shape)));     // the unrefined base: fewer parts
-    EXPECT_FALSE(geo.current_for(CompositeMultigrid(refined(c.shape, 0.25))));  // other patches
+    EXPECT_FALSE(geo.current_for(CompositeMultigrid(refined(c.shape, 0.75))));  // other patches
     long long cells = 0;
     for (int n = 0; n < mg.parts(); ++n) {
       const GridShape& s = mg.part(n).shape;
@@ -86,7 +87,7 @@ TEST(XCFCSolverGeometry, RebuiltWhenTheMultigridIsReplaced) {
   for (const Case& c : all_cases()) {
     if (c.shape.dimension == 1 && c.shape.coordinates == CoordinateSystem::cartesian) continue;
     SCOPED_TRACE(c.name);
-    const CompositeLayout before = refined(c.shape, 0.5), after = refined(c.shape, 0.25);
+    const CompositeLayout before = refined(c.shape, 0.75), after = refined(c.shape, 0.5);
     XcfcSolver sv(before);
     XcfcState st = smooth_potentials(sv.multigrid());
     sv.vector_potential_from_warm_start(st);  // the geometry of `before` is now kept
