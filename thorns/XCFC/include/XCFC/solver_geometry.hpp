@@ -1,7 +1,8 @@
 #pragma once
 // Geometry-only factors of the xCFC source terms, per part and interior cell, kept between solves:
 // the Christoffel symbols of the flat reference metric at each cell's evaluation point, which A^ij
-// needs (sin and cos of theta, 1/r per cell and solve otherwise: a quarter of a 1D solve). Only the
+// needs (sin and cos of theta, 1/r per cell and solve otherwise: 16 % of XCFC_VectorPotential in
+// 1D, README "Spacetime: XCFC"). Only the
 // six symbols that can be non-zero are stored; expand() rebuilds the full array with exact zeros,
 // so A^ij takes the same products and sums, bit for bit, as with coords::christoffels.
 // Invalidation: built for one mesh (the parts' shapes); current_for() is false once the multigrid
