@@ -99,13 +99,21 @@ VectorField to_coordinate(const CompositeMultigrid& mg, const VectorField& cart)
 }
 }  // namespace
 
+// Both with the precomputed frames (coords::jacobian and metric_diagonal at the same points), summed
+// from zero in the order of coords::vector_to_cartesian and vector_from_cartesian: the same bits,
+// without sin and cos per cell.
 VectorField to_cartesian_components(const CompositeMultigrid& mg, const VectorField& up) {
   VectorField out = sized(mg, false);
   for (int n = 0; n < mg.parts(); ++n) {
-    const GridShape& s = mg.part(n).shape;
-    for_part_cells(mg.part(n), [&](std::size_t q, std::size_t, int i, int j, int k) {
-      const Point3 V = coords::vector_to_cartesian(s.coordinates, s.point(i, j, k), {up[0].part[n][q], up[1].part[n][q], up[2].part[n][q]});
-      for (int a = 0; a < 3; ++a) out[a].part[n][q] = cartesian_component_active(mg.base_shape(), a) ? V[a] : 0.0;
+    const CellFrames& fr = mg.part(n).frames();
+    for_part_cells(mg.part(n), [&](std::size_t q, std::size_t p, int, int, int) {
+      const Matrix3& J = fr.J[p];
+      const double v[3] = {up[0].part[n][q], up[1].part[n][q], up[2].part[n][q]};
+      for (int a = 0; a < 3; ++a) {
+        double V = 0;
+        for (int i = 0; i < 3; ++i) V += J[a][i] * v[i];
+        out[a].part[n][q] = cartesian_component_active(mg.base_shape(), a) ? V : 0.0;
+      }
     });
   }
   return out;
@@ -114,10 +122,16 @@ VectorField to_cartesian_components(const CompositeMultigrid& mg, const VectorFi
 VectorField to_coordinate_components(const CompositeMultigrid& mg, const VectorField& cart) {
   VectorField out = sized(mg, false);
   for (int n = 0; n < mg.parts(); ++n) {
-    const GridShape& s = mg.part(n).shape;
-    for_part_cells(mg.part(n), [&](std::size_t q, std::size_t, int i, int j, int k) {
-      const Point3 v = coords::vector_from_cartesian(s.coordinates, s.point(i, j, k), {cart[0].part[n][q], cart[1].part[n][q], cart[2].part[n][q]});
-      for (int c = 0; c < 3; ++c) out[c].part[n][q] = v[c];
+    const CellFrames& fr = mg.part(n).frames();
+    for_part_cells(mg.part(n), [&](std::size_t q, std::size_t p, int, int, int) {
+      const Matrix3& J = fr.J[p];
+      const Point3& f = fr.f[p];
+      const double V[3] = {cart[0].part[n][q], cart[1].part[n][q], cart[2].part[n][q]};
+      for (int c = 0; c < 3; ++c) {
+        double v = 0;
+        for (int A = 0; A < 3; ++A) v += J[A][c] * V[A];
+        out[c].part[n][q] = v / f[c];
+      }
     });
   }
   return out;

@@ -56,17 +56,24 @@ ScalarEquation lapse_equation() {
 XcfcSolver::XcfcSolver(const GridShape& shape, MPI_Comm comm) : mg_(shape, comm) {}
 XcfcSolver::XcfcSolver(const CompositeLayout& layout, MPI_Comm comm) : mg_(layout, comm) {}
 
+const SolverGeometry& XcfcSolver::geometry() {
+  if (!geometry_.current_for(mg_)) geometry_ = SolverGeometry(mg_);  // first use, or mg_ replaced
+  return geometry_;
+}
+
 void XcfcSolver::compute_A(XcfcState& st) {
   const VectorField g = ghosted_coordinate_components(mg_, st.X);
+  const SolverGeometry& geo = geometry();
   for (auto& a : st.A) a = mg_.field();
   st.A2 = mg_.field();
   for (int n = 0; n < mg_.parts(); ++n) {
     const PartGeometry& pg = mg_.part(n);
     const GridShape& s = pg.shape;
     const auto& stride = pg.strides;
-    for_part_cells(pg, [&](std::size_t q, std::size_t p, int i, int j, int k) {
+    const std::vector<CompactChristoffels>& gamma = geo.christoffels(n);
+    for_part_cells(pg, [&](std::size_t q, std::size_t p, int, int, int) {
       const Point3& f = pg.frames().f[p];
-      const Christoffels G = coords::christoffels(s.coordinates, s.point(i, j, k));
+      const Christoffels G = expand(gamma[q]);
       double X[3], D[3][3];  // D[a][b] = nabla_a X^b
       for (int b = 0; b < 3; ++b) X[b] = g[b].part[n][p];
       for (int a = 0; a < 3; ++a)

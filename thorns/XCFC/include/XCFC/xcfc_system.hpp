@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "XCFC/multigrid/multigrid.hpp"
+#include "XCFC/solver_geometry.hpp"
 #include "XCFC/vector_poisson.hpp"
 
 namespace remnant::xcfc {
@@ -59,10 +60,14 @@ class XcfcSolver {
   // Residual of the psi equation for the current psi and these sources, relative to its sources
   // (the trigger of an early solve).
   double conformal_factor_residual(const CompositeField& E, const XcfcState& st);
+  // The geometry-only factors of the current multigrid (built on first use and again whenever the
+  // multigrid no longer matches them).
+  const SolverGeometry& geometry();
 
  private:
   void compute_A(XcfcState& st);
   CompositeMultigrid mg_;
+  SolverGeometry geometry_;
 };
 
 ScalarEquation conformal_factor_equation();
