@@ -16,6 +16,7 @@
 
 #include "failure_report.hpp"
 #include "remnant/build_info.hpp"
+#include "remnant/heap_reuse.hpp"
 #include "remnant/parfile.hpp"
 #include "remnant/registrar.hpp"
 #include "yaml_util.hpp"
@@ -445,6 +446,7 @@ int lowest_failing_rank(bool failed, MPI_Comm comm) {
 
 int run_main(int argc, char** argv, const ExecutableInfo& exe) {
   MPI_Init(&argc, &argv);
+  keep_freed_memory_for_reuse();  // process-wide heap setting (remnant/heap_reuse.hpp)
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   // Failure reports travel on their own communicator, apart from the thorns' messages.

@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -325,6 +326,12 @@ std::string Parameters::to_yaml(const std::vector<std::string>& thorns) const {
     for (const auto* s : specs) out += "  " + s->name + ": " + format_param_value(value(t, s->name)) + "\n";
   }
   return out;
+}
+
+std::string format_number(double x, int significant_digits) {
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.*g", significant_digits, x);
+  return buf;
 }
 
 const SourceLocation& Parameters::user_origin(std::initializer_list<std::pair<const char*, const char*>> names) const {

@@ -97,3 +97,12 @@ TEST(Parameters, TypedReferencesStayValid) {
   EXPECT_THROW(p.declare(s), InputError);
   EXPECT_EQ(p.to_yaml({"T"}), "T:\n  p: 0.25\n");
 }
+
+// The start-up checks of HeadOn and RotatingStar print numbers through this one formatter.
+TEST(Parameters, FormatNumberForMessages) {
+  EXPECT_EQ(format_number(0.1 + 0.2), "0.3");
+  EXPECT_EQ(format_number(1.28e-3), "0.00128");
+  EXPECT_EQ(format_number(123456789.0), "1.23457e+08");
+  EXPECT_EQ(format_number(0.1 + 0.2, 17), "0.30000000000000004");
+  EXPECT_EQ(format_number(3.0, 17), "3");
+}

@@ -55,6 +55,10 @@ struct ParamSpec {
 // Parses and checks a YAML value against a spec; throws InputError naming `where` otherwise.
 ParamValue parse_param_value(const ParamSpec& spec, const YAML::Node& node, const SourceLocation& where);
 std::string format_param_value(const ParamValue& v);
+// A number as the start-up checks' messages show it ("X = 1.5 needs ..."): printf's %.<digits>g
+// (6: as parfiles write them; 17: every bit, where two values must match exactly). The message's
+// location comes from Parameters::user_origin.
+std::string format_number(double x, int significant_digits = 6);
 
 class Parameters {
  public:

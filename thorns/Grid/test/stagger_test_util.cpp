@@ -116,6 +116,15 @@ FaceField make_face_field() {
   return f;
 }
 
+DomainBounds full_domain(CoordinateSystem coords) {
+  switch (coords) {
+    case CoordinateSystem::cartesian: return {{-1, -1, -1}, {1, 1, 1}};
+    case CoordinateSystem::cylindrical: return {{0, -1, 0}, {1, 1, 2 * kPi}};
+    case CoordinateSystem::spherical: return {{0, 0, 0}, {1, kPi, 2 * kPi}};
+  }
+  return {};
+}
+
 GridConfig stagger_config(CoordinateSystem coords, int dim) {
   GridConfig c;
   c.coordinates = coords;
@@ -124,20 +133,17 @@ GridConfig stagger_config(CoordinateSystem coords, int dim) {
   c.block_size = {8, 8, 8};
   c.ghost_zones = 2;
   c.max_level = 2;
+  const DomainBounds domain = full_domain(coords);
+  c.xmin = domain.xmin;
+  c.xmax = domain.xmax;
   switch (coords) {
     case CoordinateSystem::cartesian:
-      c.xmin = {-1, -1, -1};
-      c.xmax = {1, 1, 1};
       break;
     case CoordinateSystem::cylindrical:
-      c.xmin = {0, -1, 0};
-      c.xmax = {1, 1, 2 * kPi};
       c.boundary_lower = {Boundary::axis, Boundary::outflow, Boundary::periodic};
       c.boundary_upper = {Boundary::outflow, Boundary::outflow, Boundary::periodic};
       break;
     case CoordinateSystem::spherical:
-      c.xmin = {0, 0, 0};
-      c.xmax = {1, kPi, 2 * kPi};
       c.boundary_lower = {Boundary::origin, Boundary::axis, Boundary::periodic};
       c.boundary_upper = {Boundary::outflow, Boundary::axis, Boundary::periodic};
       break;

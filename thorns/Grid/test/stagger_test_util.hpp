@@ -1,5 +1,6 @@
 #pragma once
-// Helpers of the staggered-field tests: a face-normal vector B (three face groups with
+// Helpers of the staggered-field tests (the library grid_test_support, linked by Grid's and
+// HydroBase's tests): a face-normal vector B (three face groups with
 // prolongation divergence_preserving), a random divergence-free B as the discrete curl of a random
 // edge potential consistent across levels, and the discrete divergence of each cell.
 #include <cstdint>
@@ -15,7 +16,14 @@ struct FaceField {
 };
 FaceField make_face_field();
 
-// Grids with an axis/origin where the coordinates have one, max_level 2, blocks of 8 cells.
+// The whole domain of each coordinate system on [-1, 1] or [0, 1] in length, the full angles (an
+// axis/origin where the coordinates have one); shared with HydroBase's vector-potential tests.
+struct DomainBounds {
+  Point3 xmin, xmax;
+};
+DomainBounds full_domain(CoordinateSystem c);
+
+// Grids on full_domain with an axis/origin where the coordinates have one, max_level 2, blocks of 8 cells.
 GridConfig stagger_config(CoordinateSystem c, int dimension);
 
 // Sets every interior face (block boundaries included) of every local block to the curl of a

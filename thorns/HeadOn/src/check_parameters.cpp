@@ -3,20 +3,16 @@
 // be the equatorial symmetry plane), and refine_radii must describe nested levels.
 #include "check_parameters.hpp"
 
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include "model.hpp"
+#include "remnant/parameters.hpp"
 
 namespace remnant::headon {
 namespace {
 
-std::string num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
+std::string num(double x) { return format_number(x); }
 
 }  // namespace
 

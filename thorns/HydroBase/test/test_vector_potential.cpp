@@ -13,33 +13,17 @@
 #include "HydroBase/magnetic_units.hpp"
 #include "HydroBase/vector_potential.hpp"
 #include "remnant/coordinates.hpp"
+#include "stagger_test_util.hpp"  // Grid's staggered-field fixture (grid_test_support)
 
 namespace remnant::hydrobase {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-struct FaceRegistry {
-  VariableRegistry vars;
-  int group[3] = {-1, -1, -1};
-  FaceRegistry() {
-    const Centering cs[3] = {Centering::face_x, Centering::face_y, Centering::face_z};
-    const char* names[3] = {"B1", "B2", "B3"};
-    for (int d = 0; d < 3; ++d) {
-      VariableGroupSpec g;
-      g.thorn = "Test";
-      g.name = names[d];
-      g.centering = cs[d];
-      g.components = expand_tensor(TensorKind::scalar, names[d]);
-      group[d] = vars.add(std::move(g));
-    }
-  }
-};
-
 // One block of n^dim cells covering [xmin, xmax] in the used directions; `index` places it among
 // blocks of the same size (so that neighbours share bit-identical faces).
 struct TestBlock {
-  FaceRegistry reg;
+  grid::test::FaceField reg = grid::test::make_face_field();
   std::unique_ptr<Block> block;
   TestBlock(CoordinateSystem c, int dim, int n, Point3 xmin, Point3 xmax, std::array<std::int64_t, 3> index = {0, 0, 0},
             int blocks_per_direction = 1) {
@@ -68,17 +52,8 @@ struct TestBlock {
   }
 };
 
-struct Domain {
-  Point3 xmin, xmax;
-};
-Domain full_domain(CoordinateSystem c) {
-  switch (c) {
-    case CoordinateSystem::cartesian: return {{-1, -1, -1}, {1, 1, 1}};
-    case CoordinateSystem::cylindrical: return {{0, -1, 0}, {1, 1, 2 * kPi}};
-    case CoordinateSystem::spherical: return {{0, 0, 0}, {1, kPi, 2 * kPi}};
-  }
-  return {};
-}
+using grid::test::full_domain;
+using Domain = grid::test::DomainBounds;
 
 // A smooth potential in the block's coordinates, independent of the unused ones.
 CovariantPotential wiggly_potential(int dim) {

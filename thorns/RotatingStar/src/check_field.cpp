@@ -3,21 +3,17 @@
 // RotatingStar_Initial: the run needs evolved B and that thorn with the same law (K_m, m), or the
 // evolved star would not be the equilibrium that was solved for.
 #include <algorithm>
-#include <cstdio>
 #include <string>
-#include <utility>
 
 #include "check_field.hpp"
 #include "remnant/error.hpp"
+#include "remnant/parameters.hpp"
 
 namespace remnant::rotstar {
 namespace {
 
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", x);
-  return buf;
-}
+// Every bit: the seeded field's K_m and m must equal the equilibrium's exactly.
+std::string number(double x) { return format_number(x, 17); }
 
 }  // namespace
 
@@ -25,14 +21,10 @@ void check_field_parameters(Context& ctx) {
   const Parameters& p = ctx.params();
   const double K_m = ctx.param<double>("RotatingStar", "K_m"), m = ctx.param<double>("RotatingStar", "m");
   if (K_m == 0) return;
-  // Point at what the user changed last: a command-line override of any of the four, else K_m.
-  SourceLocation where = p.origin("RotatingStar", "K_m");
-  for (const auto& [thorn, name] : {std::pair{"RotatingStar", "K_m"}, {"RotatingStar", "m"}, {"SeedMagneticField", "K_m"},
-                                    {"SeedMagneticField", "m"}, {"SeedMagneticField", "type"}, {"HydroBase", "magnetic_field"}})
-    if (p.find(thorn, name) && p.origin(thorn, name).file.rfind("command line", 0) == 0) {
-      where = p.origin(thorn, name);
-      break;
-    }
+  // Point at what the user changed last: a command-line override of any of these, else K_m (set by
+  // the user: its default is 0).
+  const SourceLocation& where = p.user_origin({{"RotatingStar", "K_m"}, {"RotatingStar", "m"}, {"SeedMagneticField", "K_m"},
+                                               {"SeedMagneticField", "m"}, {"SeedMagneticField", "type"}, {"HydroBase", "magnetic_field"}});
   const std::string what = "RotatingStar::K_m = " + number(K_m) + " (m = " + number(m) + ") solves for a star in equilibrium with a toroidal field";
   const std::string mode = p.find("HydroBase", "magnetic_field") ? ctx.param<std::string>("HydroBase", "magnetic_field") : "none";
   if (mode != "evolved")

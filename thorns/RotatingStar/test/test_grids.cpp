@@ -21,6 +21,7 @@
 #include "Analysis/star_diagnostics.hpp"
 #include "RotatingStar/rns_solver.hpp"
 #include "TOV/cold_slice.hpp"
+#include "parfile_run.hpp"
 #include "remnant/coordinates.hpp"
 #include "remnant/driver.hpp"
 #include "remnant/vars/HydroBase.hpp"
@@ -70,21 +71,13 @@ std::vector<std::string> cartesian_3d(int n, double L, bool octant = false) {
 // diagnostics are taken again.
 template <class Edit>
 GridRun run(std::vector<std::string> grid, double axis_ratio, Edit&& edit) {
-  static const ThornCatalog catalog(remnant_compiled_thorns());
-  SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/rns_uniform_cyl_2d.yaml";
-  o.quiet = true;
-  const auto out = std::filesystem::temp_directory_path() / ("remnant_rotstar_grids_" + std::to_string(::getpid()));
-  o.overrides = {"Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]", "Grid::region_bounds=[]", "MoL::max_iterations=0",
-                 "MoL::final_time=-1", "IO::hdf5_every_time=0", "Analysis::rotation=true", "RotatingStar::axis_ratio=" + std::to_string(axis_ratio),
-                 "Flesh::out_dir=" + out.string()};
-  o.overrides.insert(o.overrides.end(), grid.begin(), grid.end());
-  Simulation sim(catalog, o, MPI_COMM_WORLD);
-  sim.setup_output_and_grid();
-  sim.run();
+  grid.insert(grid.begin(), {"Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]", "Grid::region_bounds=[]",
+                             "MoL::max_iterations=0", "MoL::final_time=-1", "IO::hdf5_every_time=0", "Analysis::rotation=true",
+                             "RotatingStar::axis_ratio=" + std::to_string(axis_ratio)});
+  rotstar::test::ParfileRun sim("rns_uniform_cyl_2d.yaml", "rotstar_grids", grid);
   Context& ctx = sim.context();
   GridRun g;
-  g.row = ctx.service<analysis::History>("Analysis::history").rows.back();
+  g.row = sim.history().back();
   const auto& star = model(axis_ratio);
   for (Block* b : ctx.grid().local_blocks()) {
     const vars::Spacetime::metric m(ctx, *b);
@@ -102,7 +95,6 @@ GridRun run(std::vector<std::string> grid, double axis_ratio, Edit&& edit) {
     });
   }
   edit(ctx, g);
-  std::filesystem::remove_all(out);
   return g;
 }
 
@@ -213,27 +205,12 @@ namespace {
 // The paper's rotating-star parfiles start: the model is built, mapped and re-solved by XCFC, and
 // Analysis's J and T/|W| (x2: equatorial symmetry) match the model's.
 remnant::analysis::StarDiagnostics start(const std::string& parfile, std::vector<std::string> extra = {}) {
-  static const remnant::ThornCatalog catalog(remnant_compiled_thorns());
-  remnant::SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/" + parfile;
-  o.quiet = true;
-  const auto out = std::filesystem::temp_directory_path() / ("remnant_rotstar_paper_" + std::to_string(::getpid()));
-  o.overrides = {"MoL::max_iterations=0", "MoL::final_time=-1", "IO::hdf5_every_time=0", "Flesh::out_dir=" + out.string()};
-  o.overrides.insert(o.overrides.end(), extra.begin(), extra.end());
-  remnant::Simulation sim(catalog, o, MPI_COMM_WORLD);
-  sim.setup_output_and_grid();
-  sim.run();
-  const auto row = sim.context().service<remnant::analysis::History>("Analysis::history").rows.back();
-  std::filesystem::remove_all(out);
-  return row;
+  return remnant::rotstar::test::initial_diagnostics(parfile, "rotstar_paper", std::move(extra));
 }
 
 TEST(PaperRotatingTests, DifferentiallyRotatingStarStarts) {
   const auto slice = remnant::tov::polytrope_slice(100.0, 2.0, 0.5);
-  remnant::rotstar::RnsParameters p;
-  p.law = remnant::rotstar::RotationLaw::j_constant;
-  p.omega = 0.02575;
-  p.A2 = 70;
+  remnant::rotstar::RnsParameters p = remnant::rotstar::test::drns_parameters();
   const remnant::rotstar::RotatingStarModel m(*slice, p);
   const auto row = start("drns_sph_2d.yaml");
   std::printf("drns_sph_2d at t = 0: J %.6f (model %.6f), T/|W| %.6f (%.6f), Omega_c %.6f (%.6f)\n", 2 * row.rotation.J, m.globals().J,
@@ -261,21 +238,10 @@ namespace {
 
 // The parfile's star evolved `steps` RK3 steps (XCFC every step) on the given grid; Analysis's rows.
 std::vector<remnant::analysis::StarDiagnostics> evolve(std::vector<std::string> grid, int steps) {
-  static const remnant::ThornCatalog catalog(remnant_compiled_thorns());
-  remnant::SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/rns_uniform_cyl_2d.yaml";
-  o.quiet = true;
-  const auto out = std::filesystem::temp_directory_path() / ("remnant_rotstar_evolve_" + std::to_string(::getpid()));
-  o.overrides = {"Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]", "Grid::region_bounds=[]",
-                 "MoL::max_iterations=" + std::to_string(steps), "MoL::final_time=-1", "IO::hdf5_every_time=0",
-                 "Analysis::every=1", "XCFC::solve_every=1", "Flesh::out_dir=" + out.string()};
-  o.overrides.insert(o.overrides.end(), grid.begin(), grid.end());
-  remnant::Simulation sim(catalog, o, MPI_COMM_WORLD);
-  sim.setup_output_and_grid();
-  sim.run();
-  auto rows = sim.context().service<remnant::analysis::History>("Analysis::history").rows;
-  std::filesystem::remove_all(out);
-  return rows;
+  grid.insert(grid.begin(), {"Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]", "Grid::region_bounds=[]",
+                             "MoL::max_iterations=" + std::to_string(steps), "MoL::final_time=-1", "IO::hdf5_every_time=0",
+                             "Analysis::every=1", "XCFC::solve_every=1"});
+  return remnant::rotstar::test::ParfileRun("rns_uniform_cyl_2d.yaml", "rotstar_evolve", grid).history();
 }
 
 // The same star evolved on a 2D cylindrical and a 3D Cartesian grid of the same spacing (dx = 1):

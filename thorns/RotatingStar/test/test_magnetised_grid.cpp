@@ -17,6 +17,7 @@
 #include "HydroBase/magnetic_units.hpp"
 #include "RotatingStar/rns_solver.hpp"
 #include "TOV/cold_slice.hpp"
+#include "parfile_run.hpp"
 #include "remnant/cell_geometry.hpp"
 #include "remnant/coordinates.hpp"
 #include "remnant/driver.hpp"
@@ -28,21 +29,7 @@ std::span<const remnant::ThornEntry> remnant_compiled_thorns();
 namespace {
 
 remnant::analysis::StarDiagnostics start(const std::string& parfile, std::vector<std::string> extra = {}) {
-  static const remnant::ThornCatalog catalog(remnant_compiled_thorns());
-  remnant::SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/" + parfile;
-  o.quiet = true;
-  const auto out = std::filesystem::temp_directory_path() / ("remnant_rotmag_" + std::to_string(::getpid()));
-  o.overrides = {"MoL::max_iterations=0", "MoL::final_time=-1", "IO::hdf5_every_time=0", "Flesh::out_dir=" + out.string()};
-  o.overrides.insert(o.overrides.end(), extra.begin(), extra.end());
-  struct Cleanup {
-    std::filesystem::path p;
-    ~Cleanup() { std::filesystem::remove_all(p); }
-  } cleanup{out};
-  remnant::Simulation sim(catalog, o, MPI_COMM_WORLD);
-  sim.setup_output_and_grid();
-  sim.run();
-  return sim.context().service<remnant::analysis::History>("Analysis::history").rows.back();
+  return remnant::rotstar::test::initial_diagnostics(parfile, "rotmag", std::move(extra));
 }
 
 std::string error_of(const std::string& parfile, std::vector<std::string> extra) {
@@ -60,10 +47,7 @@ std::string error_of(const std::string& parfile, std::vector<std::string> extra)
 // discretisation (dr = 0.39 at the centre, 128 cells in theta); div B = 0 on the phi faces.
 TEST(MagnetisedDrns, ParfileStartsWithTheModelsField) {
   const auto slice = remnant::tov::polytrope_slice(100.0, 2.0, 0.5);
-  remnant::rotstar::RnsParameters p;
-  p.law = remnant::rotstar::RotationLaw::j_constant;
-  p.omega = 0.02575;
-  p.A2 = 70;
+  remnant::rotstar::RnsParameters p = remnant::rotstar::test::drns_parameters();
   p.field.K_m = 3;
   p.field.m = 1;
   const remnant::rotstar::RotatingStarModel model(*slice, p);
@@ -140,22 +124,10 @@ TEST(MagnetisedDrns, CylindricalPhiFaces) {
 // The largest poloidal (meridional) speed sqrt(gamma_11 v1^2 + gamma_22 v2^2) where rho > 1e-2 rho_max
 // after `steps` steps of magnetized_drns.yaml on its base level only (dr = 1.56; one rank).
 double poloidal_speed_after(int steps, std::vector<std::string> extra) {
-  static const remnant::ThornCatalog catalog(remnant_compiled_thorns());
-  remnant::SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/magnetized_drns.yaml";
-  o.quiet = true;
-  const auto out = std::filesystem::temp_directory_path() / ("remnant_rotmag_v_" + std::to_string(::getpid()));
-  o.overrides = {"MoL::max_iterations=" + std::to_string(steps), "MoL::final_time=-1", "IO::hdf5_every_time=0", "Analysis::every=0",
-                 "Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]", "Grid::region_bounds=[]",
-                 "RotatingStar::nr=400", "Flesh::out_dir=" + out.string()};
-  o.overrides.insert(o.overrides.end(), extra.begin(), extra.end());
-  struct Cleanup {
-    std::filesystem::path p;
-    ~Cleanup() { std::filesystem::remove_all(p); }
-  } cleanup{out};
-  remnant::Simulation sim(catalog, o, MPI_COMM_WORLD);
-  sim.setup_output_and_grid();
-  sim.run();
+  extra.insert(extra.begin(), {"MoL::max_iterations=" + std::to_string(steps), "MoL::final_time=-1", "IO::hdf5_every_time=0",
+                               "Analysis::every=0", "Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]",
+                               "Grid::region_bounds=[]", "RotatingStar::nr=400"});
+  remnant::rotstar::test::ParfileRun sim("magnetized_drns.yaml", "rotmag_v", extra);
   auto& ctx = sim.context();
   double rho_max = 0, speed = 0;
   for (int pass = 0; pass < 2; ++pass)

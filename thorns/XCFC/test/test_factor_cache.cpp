@@ -10,21 +10,14 @@
 
 #include "XCFC/multigrid/multigrid.hpp"
 #include "XCFC/vector_poisson.hpp"
+#include "spherical_octant.hpp"
 
 namespace {
 
 using namespace remnant;
 using namespace remnant::xcfc;
 
-GridShape spherical_2d() {
-  GridShape s;
-  s.coordinates = CoordinateSystem::spherical;
-  s.dimension = 2;
-  s.n = {64, 16, 1};
-  s.dx = {20.0 / 64, std::numbers::pi / 2 / 16, 2 * std::numbers::pi};
-  s.boundary = {{{Boundary::origin, Boundary::outer}, {Boundary::axis, Boundary::reflect}, {Boundary::outer, Boundary::outer}}};
-  return s;
-}
+GridShape spherical_2d() { return test::spherical_octant_2d(64, 16, 20.0); }
 
 // A smooth source of amplitude a (and a matter-like k for the lapse-type equation).
 std::vector<double> bump(const GridShape& s, double a) {

@@ -14,6 +14,7 @@
 #include <numbers>
 
 #include "XCFC/multigrid/multigrid.hpp"
+#include "spherical_octant.hpp"
 
 namespace {
 
@@ -24,12 +25,7 @@ TEST(XCFCMultigridMPI, ExchangeVolume2D) {
   int nranks = 1, rank = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &nranks);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  GridShape s;
-  s.coordinates = CoordinateSystem::spherical;
-  s.dimension = 2;
-  s.n = {256, 32, 1};
-  s.dx = {60.0 / 256, std::numbers::pi / 2 / 32, 2 * std::numbers::pi};
-  s.boundary = {{{Boundary::origin, Boundary::outer}, {Boundary::axis, Boundary::reflect}, {Boundary::outer, Boundary::outer}}};
+  const GridShape s = remnant::xcfc::test::spherical_octant_2d(256, 32, 60.0);
   ScalarEquation eq;
   eq.far_value = 1.0;
   eq.k.assign(s.cells(), 0.0);

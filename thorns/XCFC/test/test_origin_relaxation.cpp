@@ -11,6 +11,7 @@
 
 #include "XCFC/multigrid/multigrid.hpp"
 #include "XCFC/vector_poisson.hpp"
+#include "spherical_octant.hpp"
 
 namespace {
 
@@ -18,15 +19,7 @@ using namespace remnant;
 using namespace remnant::xcfc;
 
 // The migration grid's shape at half its radial resolution (r to 60, theta to pi/2).
-GridShape migration_like() {
-  GridShape s;
-  s.coordinates = CoordinateSystem::spherical;
-  s.dimension = 2;
-  s.n = {320, 32, 1};
-  s.dx = {60.0 / 320, std::numbers::pi / 2 / 32, 2 * std::numbers::pi};
-  s.boundary = {{{Boundary::origin, Boundary::outer}, {Boundary::axis, Boundary::reflect}, {Boundary::outer, Boundary::outer}}};
-  return s;
-}
+GridShape migration_like() { return test::spherical_octant_2d(320, 32, 60.0); }
 
 // A star-like source (radius 8) with an l = 2 part, solved from zero to 1e-9: the mean reduction
 // per V-cycle of each xCFC equation type.

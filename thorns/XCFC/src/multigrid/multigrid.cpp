@@ -9,7 +9,6 @@
 #include <cmath>
 
 #include "boundary_ghosts.hpp"
-#include "heap_reuse.hpp"
 #include "level_ops.hpp"
 #include "line_relaxation.hpp"
 #include "line_relaxation_3d.hpp"
@@ -30,7 +29,6 @@ bool coarsens(const GridShape& s, int d) {
 }  // namespace
 
 Multigrid::Impl::Impl(const GridShape& shape, MPI_Comm c) : work(c) {
-  keep_freed_memory_for_reuse();
   levels.emplace_back(shape);
   {
     const Level& L = levels[0];

@@ -1,4 +1,4 @@
-#include "heap_reuse.hpp"
+#include "remnant/heap_reuse.hpp"
 
 #include <mutex>
 
@@ -6,7 +6,7 @@
 #include <malloc.h>
 #endif
 
-namespace remnant::xcfc {
+namespace remnant {
 
 void keep_freed_memory_for_reuse() {
 #if defined(__GLIBC__)
@@ -19,4 +19,4 @@ void keep_freed_memory_for_reuse() {
 #endif
 }
 
-}  // namespace remnant::xcfc
+}  // namespace remnant
