@@ -208,6 +208,19 @@ struct UnitCharge {
     const double x = r * r / (R * R);
     return c * R * R * (x / 6 - x * x / 10 + x * x * x / 42 - 19.0 / 210) - 1 / (4 * std::numbers::pi * R);
   }
+  // chi_1 = M x_a p(r) solves Lap chi_1 = d_a (M g) (p = h'/r with Lap h = g); its gradient is
+  // M (delta_ab p + x_a x_b k), k = p'/r. Outside: p = -1/(8 pi r) + R^2/(72 pi r^3): chi_1 tends to
+  // -M x_a / (8 pi r), which does not fall off.
+  double p(double r) const {
+    if (r >= R) return -1 / (8 * std::numbers::pi * r) + R * R / (72 * std::numbers::pi * r * r * r);
+    const double x = r * r / (R * R);
+    return c * R * R * (x / 30 - x * x / 70 + x * x * x / 378 - 19.0 / 630) - 1 / (12 * std::numbers::pi * R);
+  }
+  double k(double r) const {
+    if (r >= R) return 1 / (8 * std::numbers::pi * r * r * r) - R * R / (24 * std::numbers::pi * r * r * r * r * r);
+    const double x = r * r / (R * R);
+    return c * (1.0 / 15 - 2 * x / 35 + x * x / 63);
+  }
 };
 
 // A Cartesian component with outer faces at r^-2 (cartesian_component_equation) whose source may
@@ -255,14 +268,32 @@ double monopole_weight(const CompositeMultigrid& mg, const CompositeField& src, 
   return q > 0 ? m / q : 0;
 }
 
-// f += w * fn(r) over every cell of every part (covered cells included: they hold restrictions).
+// f += w * fn(X, r) over every cell of every part (covered cells included: they hold restrictions).
 template <class Fn>
-void add_radial(const CompositeMultigrid& mg, CompositeField& f, double w, Fn&& fn) {
+void add_cartesian(const CompositeMultigrid& mg, CompositeField& f, double w, Fn&& fn) {
   for (int n = 0; n < mg.parts(); ++n) {
     const GridShape& s = mg.part(n).shape;
     for_part_cells(mg.part(n), [&](std::size_t c, std::size_t, int i, int j, int k) {
       const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
-      f.part[static_cast<std::size_t>(n)][c] += w * fn(std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
+      f.part[static_cast<std::size_t>(n)][c] += w * fn(X, std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
+    });
+  }
+}
+template <class Fn>
+void add_radial(const CompositeMultigrid& mg, CompositeField& f, double w, Fn&& fn) {
+  add_cartesian(mg, f, w, [&](const Point3&, double r) { return fn(r); });
+}
+
+// B^a += w d_a chi_1 for every active component, chi_1 = sum_b M_b x_b p_b(r) (UnitCharge::p).
+void add_chi1_gradient(const CompositeMultigrid& mg, VectorField& B, double w, const std::array<double, 3>& M,
+                       const std::array<UnitCharge, 3>& unit) {
+  for (int a = 0; a < 3; ++a) {
+    if (!cartesian_component_active(mg.base_shape(), a)) continue;
+    add_cartesian(mg, B[a], w, [&](const Point3& X, double r) {
+      double v = 0;
+      for (int b = 0; b < 3; ++b)
+        if (M[b] != 0) v += M[b] * ((a == b ? unit[b].p(r) : 0.0) + X[a] * X[b] * unit[b].k(r));
+      return v;
     });
   }
 }
@@ -275,31 +306,44 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
   VectorSolveStats stats;
   const VectorField src = to_cartesian(mg, source_up);
   const CompositeField zero = mg.field();
+  // The monopole of each component goes into a unit charge's potential M g; the rest falls off at
+  // r^-2 (solved for B - M g). Its divergence's potential chi_1 (UnitCharge::p) tends to -M x / (8 pi r),
+  // which a 1/r condition on chi cannot hold: chi is solved for chi - chi_1 (source div(B - M g)) and
+  // warm.B keeps B - grad chi_1 / 4, so that X = B - grad chi / 4 of the kept potentials still holds.
+  std::array<double, 3> M{};
+  std::array<UnitCharge, 3> unit{UnitCharge(1.0), UnitCharge(1.0), UnitCharge(1.0)};
+  std::array<CompositeEquation, 3> eqs;
   for (int a = 0; a < 3; ++a) {
     if (warm.B[a].part.size() != zero.part.size()) warm.B[a] = zero;
+    if (!cartesian_component_active(s, a)) continue;
+    eqs[a].boundary = cartesian_component_equation(s, a);
+    eqs[a].s0 = src[a];
+    const double radius = monopole_radius(s, eqs[a].boundary);
+    unit[a] = UnitCharge(radius > 0 ? radius : 1.0);
+    M[a] = radius > 0 ? monopole_weight(mg, src[a], unit[a]) : 0.0;
+  }
+  const bool split = M[0] != 0 || M[1] != 0 || M[2] != 0;
+  if (split) add_chi1_gradient(mg, warm.B, 0.25, M, unit);
+  for (int a = 0; a < 3; ++a) {
     if (!cartesian_component_active(s, a)) {
       warm.B[a] = zero;
       stats.component[a].converged = true;
       continue;
     }
-    CompositeEquation eq;
-    eq.boundary = cartesian_component_equation(s, a);
-    eq.s0 = src[a];
-    // The monopole goes into a unit charge's potential; the rest falls off at r^-2 (solved for B - M g).
-    const double radius = monopole_radius(s, eq.boundary);
-    const UnitCharge unit(radius > 0 ? radius : 1.0);
-    const double M = radius > 0 ? monopole_weight(mg, src[a], unit) : 0.0;
-    if (M != 0) {
-      add_radial(mg, eq.s0, -M, [&](double r) { return unit.q(r); });
-      add_radial(mg, warm.B[a], -M, [&](double r) { return unit.g(r); });
+    CompositeEquation& eq = eqs[a];
+    if (M[a] != 0) {
+      add_radial(mg, eq.s0, -M[a], [&](double r) { return unit[a].q(r); });
+      add_radial(mg, warm.B[a], -M[a], [&](double r) { return unit[a].g(r); });
     }
     stats.component[a] = mg.solve(eq, warm.B[a], settings);
-    if (M != 0) add_radial(mg, warm.B[a], M, [&](double r) { return unit.g(r); });
   }
-  const VectorField B_up = to_coordinate(mg, warm.B);
   CompositeEquation chi;
   chi.boundary = chi_equation();
-  chi.s0 = divergence(mg, B_up);
+  chi.s0 = divergence(mg, to_coordinate(mg, warm.B));
+  for (int a = 0; a < 3; ++a)
+    if (M[a] != 0) add_radial(mg, warm.B[a], M[a], [&](double r) { return unit[a].g(r); });
+  if (split) add_chi1_gradient(mg, warm.B, -0.25, M, unit);
+  const VectorField B_up = to_coordinate(mg, warm.B);
   stats.chi = mg.solve(chi, warm.chi, settings);
   // X^i = B^i - f^ii d_i chi / 4 (centred differences).
   const CompositeField gchi = mg.with_ghosts(chi.boundary, warm.chi);

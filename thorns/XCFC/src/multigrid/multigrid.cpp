@@ -107,14 +107,22 @@ void Multigrid::Impl::set_fine_equation(const ScalarEquation& eq) {
   L0.r.resize(n);
   if (L0.u.size() != L0.ghosted_size) L0.u.assign(L0.ghosted_size, 0.0);
   L0.factored = false;
-  coarse_ready = false;
+  equations_ready = Ready::none;
 }
 
-void Multigrid::Impl::set_coarse_equations(const ScalarEquation& eq) {
-  if (coarse_ready) return;
+void Multigrid::Impl::set_coarse_equations(const ScalarEquation& eq, bool fine_only) {
+  if (equations_ready == Ready::all || (fine_only && equations_ready == Ready::fine)) return;
   const bool zero_k = FactorCache::zero_k(eq);
+  // A 1D line solve uses level 0 only: no restrictions, and only its lines factored unless the
+  // factor cache keeps every level's factors (computed once per equation kind).
+  const bool factor_all = !fine_only || FactorCache::eligible(eq);
   for (std::size_t l = 0; l + 1 < levels.size(); ++l) {
     Level &F = levels[l], &C = levels[l + 1];
+    if (fine_only) {
+      // The cache's factors of every level need each level's k (zeros and the mode term).
+      if (factor_all) C.k_eq.assign(C.cells(), 0.0), add_mode_term(C, eq.mode);
+      continue;
+    }
     // Once per solve; the coarse equations are complete on every rank afterwards (the lines across
     // the slabs and the undistributed levels below read all of them). A distributed coarse level
     // restricts its own slab (nested in the fine one's) and gathers the rest: each coarse cell sums
@@ -138,7 +146,8 @@ void Multigrid::Impl::set_coarse_equations(const ScalarEquation& eq) {
     if (C.u.size() != C.ghosted_size) C.u.assign(C.ghosted_size, 0.0);
   }
   if (!factor_cache.acquire(levels, eq)) {
-    for (std::size_t l = 0; l < levels.size(); ++l) {
+    const std::size_t factored_levels = factor_all ? levels.size() : 1;
+    for (std::size_t l = 0; l < factored_levels; ++l) {
       Level& L = levels[l];
       set_line_ends(L, eq);
       if (L.shape.dimension == 3 && L.shape.coordinates != CoordinateSystem::cartesian) factor_lines_3d(L, eq);
@@ -146,7 +155,7 @@ void Multigrid::Impl::set_coarse_equations(const ScalarEquation& eq) {
     }
     factor_cache.computed(levels);
   }
-  coarse_ready = true;
+  equations_ready = fine_only ? Ready::fine : Ready::all;
 }
 
 long long Multigrid::Impl::factor_own_lines(std::size_t l) {
@@ -263,7 +272,7 @@ SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, co
   const double noise = floor();
   static const bool debug = std::getenv("XCFC_DEBUG") != nullptr;
   while (res > std::max(s.tolerance * st.scale, noise) && st.cycles < s.max_cycles) {
-    m.set_coarse_equations(eq);
+    m.set_coarse_equations(eq, line_solve);
     if (line_solve) m.smooth_lines(0, eq, 0);
     else m.vcycle(0, eq, s);
     ++st.cycles;
@@ -309,8 +318,9 @@ void Multigrid::cycle(const ScalarEquation& eq, std::vector<double>& u, const st
   Level& L = m.levels[0];
   m.load(u);
   L.f.assign(f.begin(), f.end());
-  m.set_coarse_equations(eq);
-  if (s.direct_1d && L.shape.dimension == 1) m.smooth_lines(0, eq, 0);
+  const bool line_solve = s.direct_1d && L.shape.dimension == 1;
+  m.set_coarse_equations(eq, line_solve);
+  if (line_solve) m.smooth_lines(0, eq, 0);
   else m.vcycle(0, eq, s);
   m.work.replicate(0, L.u, true);
   m.store(u);

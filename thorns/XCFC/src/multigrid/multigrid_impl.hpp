@@ -96,15 +96,17 @@ struct Multigrid::Impl {
 
   // Equation coefficients: set_fine_equation on the finest level (all a residual needs);
   // set_coarse_equations on the coarse levels, line ends and line factors everywhere, only once a
-  // cycle is needed (a warm start that already meets the tolerance costs one residual).
+  // cycle is needed (a warm start that already meets the tolerance costs one residual);
+  // `fine_only` (1D line solves): line ends and factors of level 0 alone.
   void set_fine_equation(const ScalarEquation& eq);
-  void set_coarse_equations(const ScalarEquation& eq);
+  void set_coarse_equations(const ScalarEquation& eq, bool fine_only = false);
   // Thomas factors of the lines this rank relaxes on level l (all lines of an undistributed level).
   long long factor_own_lines(std::size_t l);
   // 2D spherical: the innermost radial cells whose theta lines get the extra local relaxation.
   static int origin_shells(const Level& L);
   static constexpr int kOriginPasses = 8;  // zebra passes over them per relaxation
-  bool coarse_ready = false;
+  enum class Ready { none, fine, all };
+  Ready equations_ready = Ready::none;
   FactorCache factor_cache;  // line factors of geometry-only equations, kept between solves
 
   // max |a| over a ghosted array of level l, each rank reading its own planes (the same value).
