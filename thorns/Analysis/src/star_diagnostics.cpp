@@ -7,8 +7,10 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <memory>
+#include <span>
 
-#include "remnant/coordinates.hpp"
+#include "cell_distances.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
 
@@ -19,7 +21,12 @@ StarDiagnostics star_diagnostics(Context& ctx) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   double r_min = inf, centre[3] = {0, 0, 0};            // rho, alpha, psi at the cell nearest the origin
   double maxima[3] = {-inf, -inf, -inf};                 // rho_max, -alpha_min, psi_max
-  for (Block* b : ctx.grid().local_blocks()) {
+  if (!ctx.has_service("Analysis::cell_distances")) ctx.publish("Analysis::cell_distances", std::make_shared<CellDistances>());
+  auto& distances = ctx.service<CellDistances>("Analysis::cell_distances");
+  const std::span<Block* const> blocks = ctx.grid().local_blocks();
+  for (std::size_t p = 0; p < blocks.size(); ++p) {
+    Block* b = blocks[p];
+    const double* cell_r = distances.of(blocks, p).data();
     using Prim = vars::HydroBase::prim;
     using Metric = vars::Spacetime::metric;
     const Prim prim(ctx, *b);
@@ -27,8 +34,7 @@ StarDiagnostics star_diagnostics(Context& ctx) {
     const Field rho = prim.field(Prim::idx::rho);
     const Field psi = metric.field(Metric::idx::psi), alpha = metric.field(Metric::idx::alpha);
     for_interior(*b, [&](int i, int j, int k) {
-      const Point3 X = coords::to_cartesian(b->coordinates, {b->centroid(0, i), b->centroid(1, j), b->centroid(2, k)});
-      const double r = std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
+      const double r = *cell_r++;
       // Ties (the cells around the origin of a 3D grid, equal up to round-off) take the largest
       // value, so that the result does not depend on which rank holds which of them.
       if (r < r_min) {

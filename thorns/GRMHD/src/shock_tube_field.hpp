@@ -7,7 +7,7 @@
 //   cylindrical: A = A0 (0, R sin phi, R^2 cos 2pi z)               (R, z, phi; A_z = A0 y: a uniform B^x)
 //   spherical:   A = A0 (r^2 cos theta, 0, r^2 sin^2 theta cos 2pi r)   (r, theta, phi)
 // (smooth through the axis and the origin). Face values are circulations of A around the face (edge
-// integrals by the midpoint rule) over the exact face area, so the discrete divergence of every cell
+// integrals by 8-point Gauss-Legendre, so that fine edges sum to the coarse edge to round-off) over the exact face area, so the discrete divergence of every cell
 // is zero to round-off whatever the quadrature. Flat space: psi = 1 is assumed (psi^6 B = B).
 #include <array>
 #include <functional>

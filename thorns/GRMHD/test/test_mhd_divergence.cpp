@@ -124,9 +124,8 @@ TEST(MHDDivergence, Cylindrical3DRefinedHalfAroundTheAxis) {
                          "uct_hll", 3, {0, 0, 16});
 }
 
-// uniform_z: A_phi only, whose edge integrals (midpoint rule along phi) are exact, so that coarse
-// and fine faces agree at t = 0 (smooth_test's A_r is quadratic in r: its midpoint integrals differ
-// between levels by 4e-5 of the flux before any step).
+// uniform_z: A_phi only (for smooth_test and uniform_x at t = 0 see
+// Spherical3DRefinedInitialFacesMatchAcrossLevels).
 TEST(MHDDivergence, Spherical3DRefinedHalfAroundThePolarAxis) {
   expect_divergence_free({"spherical 3D, refined phi in [0, pi] at the axis",
                           "coordinates: spherical, dimension: 3, ncells: [16, 8, 16], block_size: [8, 8, 8], "
@@ -135,6 +134,19 @@ TEST(MHDDivergence, Spherical3DRefinedHalfAroundThePolarAxis) {
                           "max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.6, 0.9, 0.0, 0.3, 0.0, 3.0]",
                           0.1},
                          "uct_hll", 3, {0, 0, 16}, "uniform_z");
+}
+
+// The initial faces alone (no step): on a refined 3D spherical grid the coarse faces carry exactly
+// their fine faces' summed flux, for a potential with A_r, A_phi (smooth_test) and with A_r, A_theta
+// (uniform_x) -- the edge integrals must be accurate, not midpoint (4.2e-5 and 2.3e-3 of the flux).
+TEST(MHDDivergence, Spherical3DRefinedInitialFacesMatchAcrossLevels) {
+  const Case c{"spherical 3D refined, t = 0",
+               "coordinates: spherical, dimension: 3, ncells: [16, 16, 32], block_size: [8, 8, 8], "
+               "xmin: [0, 0, 0], xmax: [1, 3.141592653589793, 6.283185307179586], ghost_zones: 3, "
+               "boundary_lower: [origin, axis, periodic], boundary_upper: [outflow, axis, periodic], "
+               "max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.6, 0.9, 0.2, 1.2, 0.5, 3.0]",
+               0.1};
+  for (const char* potential : {"smooth_test", "uniform_x"}) expect_divergence_free(c, "uct_hll", 0, {0, 0, 32}, potential);
 }
 
 // Spherical (r, theta, phi): the origin, both axis ends, phi periodic in 3D.

@@ -8,7 +8,6 @@
 #include <array>
 #include <vector>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 #include "HandOff/handoff_state.hpp"
@@ -16,6 +15,7 @@
 #include "read_source.hpp"
 #include "remnant/cell_geometry.hpp"
 #include "remnant/coordinates.hpp"
+#include "remnant/parameters.hpp"
 #include "remnant/vars/HandOff.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
@@ -29,11 +29,7 @@
 namespace remnant::handoff {
 namespace {
 
-std::string num(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.10g", x);
-  return b;
-}
+std::string num(double x) { return format_number(x, 10); }
 
 Totals totals(const Integrals& i) {
   return {i.rest_mass, i.angular_momentum, i.energy, i.magnetic_energy, i.magnetic_energy_toroidal};

@@ -2,19 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include "remnant/error.hpp"
+#include "remnant/parameters.hpp"
 
 namespace remnant::handoff {
 namespace {
 
-std::string num(double x) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.6g", x);
-  return b;
-}
+std::string num(double x) { return format_number(x); }
 
 std::string where(const SourceLevel& L, std::size_t q) {
   const int i = static_cast<int>(q % static_cast<std::size_t>(L.n[0]));

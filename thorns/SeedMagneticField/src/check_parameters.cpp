@@ -1,15 +1,8 @@
 #include "check_parameters.hpp"
 
-#include <cstdio>
 #include <vector>
 
 namespace remnant::seed {
-
-std::string format_number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
 
 namespace {
 

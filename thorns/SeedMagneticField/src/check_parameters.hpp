@@ -12,6 +12,4 @@ void check_parameters(Context& ctx);
 // it in the star (checked when the active thorns declare it; see README.md).
 inline constexpr const char* kMagnetisationCapThorn = "Atmosphere";
 inline constexpr const char* kMagnetisationCapName = "sigma_max";
-
-std::string format_number(double x);
 }  // namespace remnant::seed

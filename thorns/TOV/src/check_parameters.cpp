@@ -5,23 +5,19 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "TOV/tov_solver.hpp"
+#include "remnant/parameters.hpp"
 #include "slice_from_parameters.hpp"
 
 namespace remnant::tov {
 namespace {
 
-std::string num(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
+std::string num(double x) { return format_number(x); }
 
 // Radius of the largest sphere about the origin inside the grid (a lower bound of 0 is a symmetry
 // plane, the origin or an axis: the domain continues across it). Infinity without Grid parameters.
