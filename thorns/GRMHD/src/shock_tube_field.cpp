@@ -75,6 +75,9 @@ void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& 
   // same flux from t = 0 (the midpoint rule left 4e-5..2e-3 of the flux between levels).
   std::vector<double> nodes, weights;
   hydrobase::gauss_legendre(kEdgeQuadraturePoints, nodes, weights);
+  // (R, z, phi) is a left-handed order: its circulations take a minus sign so that a potential
+  // gives the same physical field in every coordinate system (as HydroBase/vector_potential.hpp).
+  const double orientation = b.coordinates == CoordinateSystem::cylindrical ? -1.0 : 1.0;
   // The line integral of A_c along the edge of direction c at face indices id (cell id[c]).
   auto line = [&](int c, const int* id) {
     Point3 x{};
@@ -114,7 +117,7 @@ void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& 
             flux -= line(bb, up) - line(bb, id);
           }
           const double area = b.face_area(a, id[0], id[1], id[2]);
-          f(id[0], id[1], id[2]) += area > 0 ? flux / area : 0.0;
+          f(id[0], id[1], id[2]) += area > 0 ? orientation * flux / area : 0.0;
         }
   }
 }
