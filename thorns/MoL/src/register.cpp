@@ -145,6 +145,8 @@ void update(Context& ctx) {
       // Interior points: cells, and for face groups the faces of the interior, both block faces
       // included (n + 1 along a used staggered direction).
       const auto extent = b->extent(spec.centering);
+      // Face fields (constrained transport) in increment form: see runge_kutta_increment_update.
+      const bool increment = spec.centering != Centering::cell && st.a + st.b == 1.0;
       const int points[3] = {extent[0] - 2 * b->ng[0], extent[1] - 2 * b->ng[1], extent[2] - 2 * b->ng[2]};
       for (int c = 0; c < spec.ncomp(); ++c) {
         Field u = b->field(g, c);
@@ -155,7 +157,10 @@ void update(Context& ctx) {
             double* urow = &u(0, j, k);
             const double* rrow = &rhs(0, j, k);
             const double* u0row = u0 + (urow - b->data(g));
-            runge_kutta_update(urow, u0row, rrow, static_cast<std::size_t>(points[0]), st.a, st.b, dt);
+            if (increment)
+              runge_kutta_increment_update(urow, u0row, rrow, static_cast<std::size_t>(points[0]), st.b, dt);
+            else
+              runge_kutta_update(urow, u0row, rrow, static_cast<std::size_t>(points[0]), st.a, st.b, dt);
           }
       }
     }
