@@ -83,14 +83,8 @@ void add_potential_field(const CovariantPotential& A, const std::array<int, 3>& 
     Point3 x{};
     for (int d = 0; d < 3; ++d) x[d] = d == c ? b.x(d, id[d]) : b.face_coordinate(d, id[d]);
     if (!used[c]) return A(x)[c] * b.volume_weight(c, 0);
-    const double lo = b.face_coordinate(c, id[c]), hi = b.face_coordinate(c, id[c] + 1);
-    const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
-    double sum = 0;
-    for (std::size_t q = 0; q < nodes.size(); ++q) {
-      x[c] = mid + half * nodes[q];
-      sum += weights[q] * A(x)[c];
-    }
-    return sum * half;
+    return hydrobase::gauss_line_integral(A, x, c, b.face_coordinate(c, id[c]), b.face_coordinate(c, id[c] + 1),
+                                          nodes, weights);
   };
   for (int a = 0; a < 3; ++a) {
     const int bb = (a + 1) % 3, c = (a + 2) % 3;

@@ -38,17 +38,21 @@ double edge_integral(const Block& b, const CovariantPotential& A, int a, int cel
     x[ua] = b.x(a, 0);
     return A(x)[ua];
   }
-  const double lo = b.face_coordinate(a, cell), hi = b.face_coordinate(a, cell + 1);
-  const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
-  double s = 0.0;
-  for (std::size_t q = 0; q < nodes.size(); ++q) {
-    x[ua] = mid + half * nodes[q];
-    s += weights[q] * A(x)[ua];
-  }
-  return s * half;
+  return gauss_line_integral(A, x, a, b.face_coordinate(a, cell), b.face_coordinate(a, cell + 1), nodes, weights);
 }
 
 }  // namespace
+
+double gauss_line_integral(const CovariantPotential& A, Point3 x, int k, double lo, double hi,
+                           const std::vector<double>& nodes, const std::vector<double>& weights) {
+  const double half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
+  double s = 0.0;
+  for (std::size_t q = 0; q < nodes.size(); ++q) {
+    x[k] = mid + half * nodes[q];
+    s += weights[q] * A(x)[k];
+  }
+  return s * half;
+}
 
 void gauss_legendre(int n, std::vector<double>& nodes, std::vector<double>& weights) {
   if (n < 1 || n > 16)

@@ -88,5 +88,9 @@ double face_orthonormal_area(const Block& b, int d, int i, int j, int k);
 
 // Gauss-Legendre nodes on [-1, 1] and weights, n = 1..16.
 void gauss_legendre(int n, std::vector<double>& nodes, std::vector<double>& weights);
+// Integral of A(x)[k] dx^k along coordinate k from lo to hi, the other coordinates of x held, by
+// the Gauss-Legendre rule (nodes, weights) on [-1, 1].
+double gauss_line_integral(const CovariantPotential& A, Point3 x, int k, double lo, double hi,
+                           const std::vector<double>& nodes, const std::vector<double>& weights);
 
 }  // namespace remnant::hydrobase
