@@ -51,6 +51,19 @@ const Case kCartesian2D{"Cartesian 2D, refined box",
                             ", max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.4, 0.7, 0.3, 0.6, -1, 2]",
                         0.05};
 
+const Case kCartesian3D{"Cartesian 3D, refined box",
+                        "dimension: 3, ncells: [16, 16, 16], block_size: [8, 8, 8], xmin: [0, 0, 0], xmax: [1, 1, 1], "
+                        "ghost_zones: 3, " + kOutflow +
+                            ", max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.1, 0.2, 0.1, 0.2, 0.1, 0.2]",
+                        0.05};
+
+const Case kSpherical2D{"spherical 2D, refined box",
+                        "coordinates: spherical, dimension: 2, ncells: [32, 32, 1], block_size: [8, 8, 1], "
+                        "xmin: [0, 0, 0], xmax: [1, 3.141592653589793, 1], ghost_zones: 3, "
+                        "boundary_lower: [origin, axis, outflow], boundary_upper: [outflow, axis, outflow], "
+                        "max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.5, 0.8, 0.0, 0.5, -10, 10]",
+                        0.1};
+
 }  // namespace
 
 TEST(MHDDivergence, Cartesian1D) {
@@ -64,20 +77,12 @@ TEST(MHDDivergence, Cartesian2DRefinedArithmetic) { expect_divergence_free(kCart
 TEST(MHDDivergence, Cartesian2DRefinedContact) { expect_divergence_free(kCartesian2D, "uct_contact"); }
 
 TEST(MHDDivergence, Cartesian3DRefined) {
-  expect_divergence_free({"Cartesian 3D, refined box",
-                          "dimension: 3, ncells: [16, 16, 16], block_size: [8, 8, 8], xmin: [0, 0, 0], xmax: [1, 1, 1], "
-                          "ghost_zones: 3, " + kOutflow +
-                              ", max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.1, 0.2, 0.1, 0.2, 0.1, 0.2]",
-                          0.05},
+  expect_divergence_free(kCartesian3D,
                          "uct_hll", 6);
 }
 
 TEST(MHDDivergence, Cartesian3DRefinedContact) {
-  expect_divergence_free({"Cartesian 3D, refined box",
-                          "dimension: 3, ncells: [16, 16, 16], block_size: [8, 8, 8], xmin: [0, 0, 0], xmax: [1, 1, 1], "
-                          "ghost_zones: 3, " + kOutflow +
-                              ", max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.1, 0.2, 0.1, 0.2, 0.1, 0.2]",
-                          0.05},
+  expect_divergence_free(kCartesian3D,
                          "uct_contact", 6);
 }
 
@@ -93,12 +98,7 @@ TEST(MHDDivergence, Cylindrical2DRefined) {
 }
 
 TEST(MHDDivergence, Spherical2DRefinedContact) {
-  expect_divergence_free({"spherical 2D, refined box",
-                          "coordinates: spherical, dimension: 2, ncells: [32, 32, 1], block_size: [8, 8, 1], "
-                          "xmin: [0, 0, 0], xmax: [1, 3.141592653589793, 1], ghost_zones: 3, "
-                          "boundary_lower: [origin, axis, outflow], boundary_upper: [outflow, axis, outflow], "
-                          "max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.5, 0.8, 0.0, 0.5, -10, 10]",
-                          0.1},
+  expect_divergence_free(kSpherical2D,
                          "uct_contact");
 }
 
@@ -151,12 +151,7 @@ TEST(MHDDivergence, Spherical3DRefinedInitialFacesMatchAcrossLevels) {
 
 // Spherical (r, theta, phi): the origin, both axis ends, phi periodic in 3D.
 TEST(MHDDivergence, Spherical2DRefined) {
-  expect_divergence_free({"spherical 2D, refined box",
-                          "coordinates: spherical, dimension: 2, ncells: [32, 32, 1], block_size: [8, 8, 1], "
-                          "xmin: [0, 0, 0], xmax: [1, 3.141592653589793, 1], ghost_zones: 3, "
-                          "boundary_lower: [origin, axis, outflow], boundary_upper: [outflow, axis, outflow], "
-                          "max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.5, 0.8, 0.0, 0.5, -10, 10]",
-                          0.1},
+  expect_divergence_free(kSpherical2D,
                          "uct_hll");
 }
 
