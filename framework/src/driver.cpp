@@ -428,7 +428,11 @@ void print_usage(const ExecutableInfo& exe) {
                "  --debug              NaN-poison declared outputs and check undeclared writes (Flesh::debug)\n"
                "  --list-thorns        print the thorns compiled into this executable\n"
                "  --version            print the git revision and build type\n"
-               "  -h, --help           this help\n";
+               "  -h, --help           this help\n"
+               "\nOverrides (after the parfile, applied in order):\n"
+               "  Thorn::param=value   set one parameter (YAML value: 0.5, [16,16,1], true, keyword)\n"
+               "  active_thorns=[A,B]  replace the parfile's thorn list\n"
+               "  active_thorns+=[C]   add thorns to it\n";
 }
 
 // Agree on failure across ranks during set-up so that no rank waits in a collective forever.
@@ -488,7 +492,7 @@ int run_main(int argc, char** argv, const ExecutableInfo& exe) {
       return 0;
     } else if (a.rfind("--", 0) == 0) {
       error = "command line: error: unknown option '" + a + "' (see --help)";
-    } else if (a.find("::") != std::string::npos && a.find('=') != std::string::npos) {
+    } else if ((a.find("::") != std::string::npos && a.find('=') != std::string::npos) || is_active_thorns_override(a)) {
       opts.overrides.push_back(a);
     } else if (!positional_parfile) {
       opts.parfile_path = a;

@@ -90,12 +90,53 @@ Parfile Parfile::load(const std::string& path, const std::string* text) {
   return pf;
 }
 
+namespace {
+// "active_thorns=[A, B]" replaces the parfile's list; "active_thorns+=[C]" (or "+=C") adds to it.
+void apply_active_thorns_override(Parfile& pf, const std::string& arg, const SourceLocation& where) {
+  const bool add = arg.rfind("active_thorns+=", 0) == 0;
+  const std::string text = arg.substr(add ? 15 : 14);
+  YAML::Node parsed;
+  try {
+    parsed = YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw InputError(where, "cannot parse the thorn list: " + e.msg);
+  }
+  // (yaml-cpp nodes have reference semantics: build a new sequence rather than assign into `parsed`)
+  YAML::Node list(YAML::NodeType::Sequence);
+  if (parsed.IsScalar() && add)
+    list.push_back(parsed.Scalar());
+  else
+    list = parsed;
+  if (!list.IsSequence() || list.size() == 0)
+    throw InputError(where, add ? "expected active_thorns+=[Thorn, ...] (or active_thorns+=Thorn)"
+                                : "expected active_thorns=[Thorn, ...], a non-empty list of thorn names");
+  if (!add) {
+    pf.active_thorns.clear();
+    pf.active_where.clear();
+  }
+  for (const auto& t : list) {
+    if (!t.IsScalar() || t.Scalar().empty()) throw InputError(where, "'active_thorns' entries must be thorn names");
+    if (std::find(pf.active_thorns.begin(), pf.active_thorns.end(), t.Scalar()) != pf.active_thorns.end()) {
+      if (add) continue;  // adding a thorn that is already active is harmless
+      throw InputError(where, "thorn '" + t.Scalar() + "' is listed twice in active_thorns");
+    }
+    pf.active_thorns.push_back(t.Scalar());
+    pf.active_where[t.Scalar()] = where;
+  }
+  pf.active_thorns_where = where;
+}
+}  // namespace
+
 void Parfile::apply_override(const std::string& arg, int index) {
   const SourceLocation where{"command line argument " + std::to_string(index) + " '" + arg + "'", 0, 0};
+  if (is_active_thorns_override(arg)) {
+    apply_active_thorns_override(*this, arg, where);
+    return;
+  }
   static const std::regex re(R"(([A-Za-z_][A-Za-z0-9_]*)::([A-Za-z_][A-Za-z0-9_]*)=(.*))");
   std::smatch m;
   if (!std::regex_match(arg, m, re))
-    throw InputError(where, "expected Thorn::parameter=value");
+    throw InputError(where, "expected Thorn::parameter=value, active_thorns=[...] or active_thorns+=[...]");
   YAML::Node value;
   try {
     value = YAML::Load(m[3].str());
@@ -146,6 +187,10 @@ void apply_parfile(const Parfile& pf, const std::vector<std::string>& compiled, 
       params.set(thorn, name, parse_param_value(*spec, setting.value, setting.where), setting.where);
     }
   }
+}
+
+bool is_active_thorns_override(const std::string& arg) {
+  return arg.rfind("active_thorns=", 0) == 0 || arg.rfind("active_thorns+=", 0) == 0;
 }
 
 }  // namespace remnant

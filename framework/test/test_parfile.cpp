@@ -158,3 +158,30 @@ TEST(Parfile, ThornListedTwiceIsAnError) {
   auto g = write_file(d / "b.yaml", "include: base.yaml\nactive_thorns: [Wave, Other]\n");
   EXPECT_EQ(Parfile::load(g).active_thorns, (std::vector<std::string>{"Wave", "Other"}));
 }
+
+// The thorn list can be changed from the command line like any parameter (it used to be taken for a
+// second parfile): "=" replaces the list, "+=" adds to it.
+TEST(Parfile, ActiveThornsOverrideReplacesOrAdds) {
+  auto d = temp_dir("parfile_active_override");
+  auto f = write_file(d / "a.yaml", "active_thorns: [Wave, Other]\n");
+  Parfile replaced = Parfile::load(f);
+  replaced.apply_override("active_thorns=[Wave]", 1);
+  EXPECT_EQ(replaced.active_thorns, std::vector<std::string>{"Wave"});
+  EXPECT_NE(replaced.active_thorns_where.str().find("command line argument 1"), std::string::npos);
+
+  Parfile added = Parfile::load(f);
+  added.apply_override("active_thorns+=[Third, Wave]", 2);
+  added.apply_override("active_thorns+=Fourth", 3);
+  EXPECT_EQ(added.active_thorns, (std::vector<std::string>{"Wave", "Other", "Third", "Fourth"}));
+  EXPECT_TRUE(is_active_thorns_override("active_thorns+=[X]"));
+  EXPECT_FALSE(is_active_thorns_override("active_thornsX=[X]"));
+}
+
+TEST(Parfile, MalformedActiveThornsOverride) {
+  Parfile pf;
+  expect_error<InputError>([&] { pf.apply_override("active_thorns=Wave", 4); },
+                           {"command line argument 4", "active_thorns=[Thorn, ...]"});
+  expect_error<InputError>([&] { pf.apply_override("active_thorns=[Wave, Wave]", 5); }, {"listed twice"});
+  expect_error<InputError>([&] { pf.apply_override("active_thorns=[]", 6); }, {"non-empty list"});
+  expect_error<InputError>([&] { pf.apply_override("active_thorns=[a, [b]]", 7); }, {"thorn names"});
+}

@@ -1,6 +1,6 @@
 #pragma once
 // YAML parfiles: `include:` layering, `active_thorns:`, one map per thorn, command-line overrides
-// `Thorn::param=value`. Every value keeps its location so that errors name file:line:col.
+// `Thorn::param=value` and `active_thorns=[...]` / `active_thorns+=[...]`. Every value keeps its location so that errors name file:line:col.
 #include <yaml-cpp/yaml.h>
 
 #include <map>
@@ -29,9 +29,13 @@ struct Parfile {
 
   // Reads a parfile (from disk, or from `text` when given) with its includes.
   static Parfile load(const std::string& path, const std::string* text = nullptr);
-  // Applies "Thorn::param=value"; `argument_index` is for error messages.
+  // Applies "Thorn::param=value", or "active_thorns=[...]" (replaces the list) /
+  // "active_thorns+=[...]" (adds to it); `argument_index` is for error messages.
   void apply_override(const std::string& arg, int argument_index);
 };
+
+// True for the command-line forms "active_thorns=..." and "active_thorns+=...".
+bool is_active_thorns_override(const std::string& arg);
 
 // Checks every setting against the declared parameters and stores it: unknown thorns, inactive
 // thorns, unknown parameters (with the nearest valid names), wrong types and ranges are errors.
