@@ -54,16 +54,30 @@ void load(Context& ctx, HandOffState& st) {
                 : std::string("")));
   ctx.info("HandOff: onto the grid " + st.target.describe());
   for (const auto& n : st.notes) ctx.info("HandOff: note: " + n);
-  const SourceIntegrals I = integrate_source(src, st.target);
+  // Matter: points denser than the data's atmosphere (HandOff::atmosphere_density; automatic: the
+  // grid's Atmosphere::rho_thr or twice the data's floor, the larger).
+  double atmosphere_rho = ctx.param<double>("HandOff", "atmosphere_density");
+  const double rho_min = smallest_density(src);
+  if (atmosphere_rho < 0) {
+    const bool thr = ctx.params().find("Atmosphere", "rho_thr") != nullptr;
+    atmosphere_rho = std::max(thr ? ctx.param<double>("Atmosphere", "rho_thr") : 0.0, 2 * rho_min);
+  }
+  const SourceIntegrals I = integrate_source(src, st.target, atmosphere_rho);
   auto& r = st.report;
   r.source_all = totals(I.all), r.source_covered = totals(I.covered), r.source_grid = totals(I.grid);
+  r.atmosphere_rho = atmosphere_rho;
+  r.source_matter_rest_mass = I.all.matter_rest_mass;
   r.outside_fraction = I.outside_fraction();
   r.has_metric = src.has_metric;
   r.has_lapse = src.has_lapse;
+  ctx.info("HandOff: the data's smallest rho " + num(rho_min) + "; matter (rho > " + num(atmosphere_rho) +
+           ", HandOff::atmosphere_density) holds " + num(I.all.matter_rest_mass) + " of the 3D rest mass " +
+           num(I.all.rest_mass) + ", of it outside the grid: " + num(r.outside_fraction));
   const double limit = ctx.param<double>("HandOff", "max_outside_fraction");
   if (r.outside_fraction > limit)
-    throw RunError("HandOff: " + num(100 * r.outside_fraction) + " % of the 3D rest mass (M0 = " + num(r.source_all.rest_mass) +
-                   ") lies outside the grid " + st.target.describe() + "; the grid cuts the star: enlarge Grid::xmax (or "
+    throw RunError("HandOff: " + num(100 * r.outside_fraction) + " % of the 3D rest mass of the matter (rho > " + num(atmosphere_rho) +
+                   ", HandOff::atmosphere_density; M0 = " + num(I.all.matter_rest_mass) + ") lies outside the grid " +
+                   st.target.describe() + "; the grid cuts the star: enlarge Grid::xmax (or "
                    "raise HandOff::max_outside_fraction = " + num(limit) + ")");
 }
 
