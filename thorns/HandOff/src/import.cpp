@@ -62,6 +62,21 @@ void load(Context& ctx, HandOffState& st) {
     const bool thr = ctx.params().find("Atmosphere", "rho_thr") != nullptr;
     atmosphere_rho = std::max(thr ? ctx.param<double>("Atmosphere", "rho_thr") : 0.0, 2 * rho_min);
   }
+  // Without the data's 3-metric the densitised variables lack sqrt(gamma): XCFC then iterates psi
+  // with the data's primitives (from_primitives); with it the conserved variables are imported.
+  const Parameters& p = ctx.params();
+  const bool from_primitives = p.find("XCFC", "initial_metric") && ctx.param<std::string>("XCFC", "initial_metric") == "from_primitives";
+  if (from_primitives && src.has_metric)
+    throw InputError(p.origin("XCFC", "initial_metric"),
+                     "HandOff imports densitised conserved variables: XCFC::initial_metric must be from_conserved (is from_primitives, "
+                     "allowed only for data without ADMBase::gxx..gzz; " +
+                         (src.file_of.count("gxx") ? src.file_of.at("gxx") : src.file_of.begin()->second) + " has them)");
+  if (from_primitives)
+    ctx.info("HandOff: XCFC::initial_metric = from_primitives: the data's rho, eps and v are kept and psi is iterated with them; "
+             "the grid's rest mass is then int psi^6 rho W dV (the data give no sqrt(gamma) to conserve)");
+  else if (!src.has_metric)
+    ctx.info("HandOff: note: without ADMBase::gxx..gzz the imported D = rho W lacks sqrt(gamma): rho after the metric solve is "
+             "rho / psi^6 (XCFC::initial_metric = from_primitives keeps the data's rho)");
   const SourceIntegrals I = integrate_source(src, st.target, atmosphere_rho);
   auto& r = st.report;
   r.source_all = totals(I.all), r.source_covered = totals(I.covered), r.source_grid = totals(I.grid);
@@ -141,7 +156,9 @@ void check_parameters(Context& ctx) {
   const Parameters& p = ctx.params();
   if (ctx.param<std::vector<std::string>>("HandOff", "files").empty())
     throw InputError(p.origin("HandOff", "files"), "HandOff::files is empty: name the 3D data files (paths or globs)");
-  if (p.find("XCFC", "initial_metric") && ctx.param<std::string>("XCFC", "initial_metric") != "from_conserved")
+  // from_primitives only for data without a 3-metric (checked when they are read).
+  if (p.find("XCFC", "initial_metric") && ctx.param<std::string>("XCFC", "initial_metric") != "from_conserved" &&
+      ctx.param<std::string>("XCFC", "initial_metric") != "from_primitives")
     throw InputError(p.origin("XCFC", "initial_metric"),
                      "HandOff imports densitised conserved variables: XCFC::initial_metric must be from_conserved (is " +
                          ctx.param<std::string>("XCFC", "initial_metric") + ")");
