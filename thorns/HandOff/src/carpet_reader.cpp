@@ -78,6 +78,22 @@ int dump_flag(const std::string& dump, const std::string& key) {
   return 0;
 }
 
+// A file's output: its path less ".file_N.h5" (CarpetIOHDF5 writes one file per process group).
+std::string output_stem(const std::string& path) {
+  const auto p = path.rfind(".file_");
+  return p == std::string::npos ? path : path.substr(0, p);
+}
+
+// Whether a file holds ghost points (Cactus dumps only parameters set away from their default,
+// yes): CarpetIOHDF5's 3D slice output (out3D_vars, files "<var>.xyz[.file_N].h5") follows
+// out3D_ghosts, its volume output (out_vars, "<var>[.file_N].h5") output_ghost_points; one run
+// often writes both with different settings.
+bool ghost_points_written(const std::string& dump, const std::string& path) {
+  const std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
+  const bool slice_3d = name.find(".xyz.") != std::string::npos;
+  return dump_flag(dump, slice_3d ? "carpetiohdf5::out3d_ghosts" : "carpetiohdf5::output_ghost_points") != 0;
+}
+
 std::string join_levels(const std::set<int>& s) {
   std::string out;
   for (auto x : s) out += (out.empty() ? "" : ", ") + std::to_string(x);
@@ -138,17 +154,31 @@ SourceData read_carpet(const CarpetOptions& opt) {
   std::map<std::string, std::map<std::int64_t, std::vector<DatasetRef>>> index;
   std::array<bool, 3> refl = opt.reflection;
   bool ghosts_in_files = true;
+  std::map<std::string, bool> ghosts_of_file;
   const std::set<std::string> wanted(opt.variables.begin(), opt.variables.end());
+  // Parameter dumps: a file without one takes that of a file of the same output (the name less
+  // ".file_N.h5"), else the first one found.
+  std::map<std::string, std::string> dump_of, dump_of_output;
+  std::string any_dump;
   for (const auto& file : opt.files) {
     h5::Handle f = h5::open_file(file);
-    const std::string dump = parameter_dump(f, file);
+    dump_of[file] = parameter_dump(f, file);
+    if (dump_of[file].empty()) continue;
+    dump_of_output.emplace(output_stem(file), dump_of[file]);
+    if (any_dump.empty()) any_dump = dump_of[file];
+  }
+  for (auto& [file, dump] : dump_of)
+    if (dump.empty()) dump = dump_of_output.count(output_stem(file)) ? dump_of_output.at(output_stem(file)) : any_dump;
+  for (const auto& file : opt.files) {
+    h5::Handle f = h5::open_file(file);
+    const std::string& dump = dump_of.at(file);
     if (opt.reflection_from_file)
       for (int d = 0; d < 3; ++d)
         if (dump_flag(dump, std::string("reflectionsymmetry::reflection_") + static_cast<char>('x' + d)) == 1)
           refl[static_cast<std::size_t>(d)] = true;
-    // Ghost zones are in the files unless CarpetIOHDF5::output_ghost_points (or out3D_ghosts) is off.
-    if (dump_flag(dump, "carpetiohdf5::output_ghost_points") == 0 || dump_flag(dump, "carpetiohdf5::out3d_ghosts") == 0)
-      ghosts_in_files = false;
+    const bool ghosts = ghost_points_written(dump, file);
+    ghosts_of_file[file] = ghosts;
+    ghosts_in_files = ghosts_in_files && ghosts;
     for (const auto& name : h5::dataset_names(f)) {
       std::string var;
       std::int64_t it = 0;
@@ -240,7 +270,8 @@ SourceData read_carpet(const CarpetOptions& opt) {
       const auto origin = h5::attr_doubles(d, "origin", r.file, r.name);
       const auto delta = h5::attr_doubles(d, "delta", r.file, r.name);
       std::vector<long long> ghosts{0, 0, 0};
-      if (h5::has_attr(d, "cctk_nghostzones") && ghosts_in_files) ghosts = h5::attr_ints(d, "cctk_nghostzones", r.file, r.name);
+      if (h5::has_attr(d, "cctk_nghostzones") && ghosts_of_file.at(r.file))
+        ghosts = h5::attr_ints(d, "cctk_nghostzones", r.file, r.name);
       if (!have_time && h5::has_attr(d, "time")) out.time = h5::attr_doubles(d, "time", r.file, r.name).at(0), have_time = true;
       if (shape.size() != 3 || origin.size() != 3 || delta.size() != 3 || ghosts.size() != 3)
         throw RunError("HandOff: " + r.file + ": dataset '" + r.name + "' is not 3D data (HandOff reads 3D Carpet output)");

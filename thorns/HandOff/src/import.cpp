@@ -54,16 +54,45 @@ void load(Context& ctx, HandOffState& st) {
                 : std::string("")));
   ctx.info("HandOff: onto the grid " + st.target.describe());
   for (const auto& n : st.notes) ctx.info("HandOff: note: " + n);
-  const SourceIntegrals I = integrate_source(src, st.target);
+  // Matter: points denser than the data's atmosphere (HandOff::atmosphere_density; automatic: the
+  // grid's Atmosphere::rho_thr or twice the data's floor, the larger).
+  double atmosphere_rho = ctx.param<double>("HandOff", "atmosphere_density");
+  const double rho_min = smallest_density(src);
+  if (atmosphere_rho < 0) {
+    const bool thr = ctx.params().find("Atmosphere", "rho_thr") != nullptr;
+    atmosphere_rho = std::max(thr ? ctx.param<double>("Atmosphere", "rho_thr") : 0.0, 2 * rho_min);
+  }
+  // Without the data's 3-metric the densitised variables lack sqrt(gamma): XCFC then iterates psi
+  // with the data's primitives (from_primitives); with it the conserved variables are imported.
+  const Parameters& p = ctx.params();
+  const bool from_primitives = p.find("XCFC", "initial_metric") && ctx.param<std::string>("XCFC", "initial_metric") == "from_primitives";
+  if (from_primitives && src.has_metric)
+    throw InputError(p.origin("XCFC", "initial_metric"),
+                     "HandOff imports densitised conserved variables: XCFC::initial_metric must be from_conserved (is from_primitives, "
+                     "allowed only for data without ADMBase::gxx..gzz; " +
+                         (src.file_of.count("gxx") ? src.file_of.at("gxx") : src.file_of.begin()->second) + " has them)");
+  if (from_primitives)
+    ctx.info("HandOff: XCFC::initial_metric = from_primitives: the data's rho, eps and v are kept and psi is iterated with them; "
+             "the grid's rest mass is then int psi^6 rho W dV (the data give no sqrt(gamma) to conserve)");
+  else if (!src.has_metric)
+    ctx.info("HandOff: note: without ADMBase::gxx..gzz the imported D = rho W lacks sqrt(gamma): rho after the metric solve is "
+             "rho / psi^6 (XCFC::initial_metric = from_primitives keeps the data's rho)");
+  const SourceIntegrals I = integrate_source(src, st.target, atmosphere_rho);
   auto& r = st.report;
   r.source_all = totals(I.all), r.source_covered = totals(I.covered), r.source_grid = totals(I.grid);
+  r.atmosphere_rho = atmosphere_rho;
+  r.source_matter_rest_mass = I.all.matter_rest_mass;
   r.outside_fraction = I.outside_fraction();
   r.has_metric = src.has_metric;
   r.has_lapse = src.has_lapse;
+  ctx.info("HandOff: the data's smallest rho " + num(rho_min) + "; matter (rho > " + num(atmosphere_rho) +
+           ", HandOff::atmosphere_density) holds " + num(I.all.matter_rest_mass) + " of the 3D rest mass " +
+           num(I.all.rest_mass) + ", of it outside the grid: " + num(r.outside_fraction));
   const double limit = ctx.param<double>("HandOff", "max_outside_fraction");
   if (r.outside_fraction > limit)
-    throw RunError("HandOff: " + num(100 * r.outside_fraction) + " % of the 3D rest mass (M0 = " + num(r.source_all.rest_mass) +
-                   ") lies outside the grid " + st.target.describe() + "; the grid cuts the star: enlarge Grid::xmax (or "
+    throw RunError("HandOff: " + num(100 * r.outside_fraction) + " % of the 3D rest mass of the matter (rho > " + num(atmosphere_rho) +
+                   ", HandOff::atmosphere_density; M0 = " + num(I.all.matter_rest_mass) + ") lies outside the grid " +
+                   st.target.describe() + "; the grid cuts the star: enlarge Grid::xmax (or "
                    "raise HandOff::max_outside_fraction = " + num(limit) + ")");
 }
 
@@ -127,7 +156,9 @@ void check_parameters(Context& ctx) {
   const Parameters& p = ctx.params();
   if (ctx.param<std::vector<std::string>>("HandOff", "files").empty())
     throw InputError(p.origin("HandOff", "files"), "HandOff::files is empty: name the 3D data files (paths or globs)");
-  if (p.find("XCFC", "initial_metric") && ctx.param<std::string>("XCFC", "initial_metric") != "from_conserved")
+  // from_primitives only for data without a 3-metric (checked when they are read).
+  if (p.find("XCFC", "initial_metric") && ctx.param<std::string>("XCFC", "initial_metric") != "from_conserved" &&
+      ctx.param<std::string>("XCFC", "initial_metric") != "from_primitives")
     throw InputError(p.origin("XCFC", "initial_metric"),
                      "HandOff imports densitised conserved variables: XCFC::initial_metric must be from_conserved (is " +
                          ctx.param<std::string>("XCFC", "initial_metric") + ")");

@@ -58,11 +58,27 @@ GaugeRoles gauge_roles(CoordinateSystem cs) {
   return {0, 1, 2, 1.0};
 }
 
+// The flux through the face of a level normal to d at face index fd, spanning the cells c1
+// (direction e1) and c2 (e2); a periodic direction's last face is its first.
+struct LevelFlux {
+  const Frame& fr;
+  const FluxQuadrature& of;
+  const std::array<bool, 3>& periodic;
+  double operator()(int d, std::int64_t fd, int e1, std::int64_t c1, int e2, std::int64_t c2) const {
+    const auto ud = static_cast<std::size_t>(d);
+    const LevelFaces& F = fr.F;
+    if (periodic[ud] && fd == fr.cells[ud]) fd = 0;
+    Point3 lo{}, hi{};
+    lo[static_cast<std::size_t>(e1)] = F(e1, c1), hi[static_cast<std::size_t>(e1)] = F(e1, c1 + 1);
+    lo[static_cast<std::size_t>(e2)] = F(e2, c2), hi[static_cast<std::size_t>(e2)] = F(e2, c2 + 1);
+    return of.flux(d, F(d, fd), lo, hi);
+  }
+};
+
 EdgeTable gauge_edges(const Frame& fr, const FluxQuadrature& flux_of, const std::array<bool, 3>& periodic, CoordinateSystem cs) {
   const GaugeRoles R = gauge_roles(cs);
   const int p = R.p, q = R.q, g = R.g;
   const auto up = static_cast<std::size_t>(p), uq = static_cast<std::size_t>(q), ug = static_cast<std::size_t>(g);
-  const LevelFaces& F = fr.F;
   const std::int64_t gp = fr.first[up], gq = fr.first[uq], gg = fr.first[ug];
   const std::int64_t top = gg + fr.n[ug];
   EdgeTable t(fr);
@@ -71,16 +87,7 @@ EdgeTable gauge_edges(const Frame& fr, const FluxQuadrature& flux_of, const std:
     idx[up] = static_cast<int>(ip), idx[uq] = static_cast<int>(iq), idx[ug] = static_cast<int>(ig);
     return t(a, idx[0], idx[1], idx[2]);
   };
-  // The flux through the face normal to d at face index fd, spanning the cells c1 (direction e1)
-  // and c2 (e2); a periodic direction's last face is its first.
-  auto flux = [&](int d, std::int64_t fd, int e1, std::int64_t c1, int e2, std::int64_t c2) {
-    const auto ud = static_cast<std::size_t>(d);
-    if (periodic[ud] && fd == fr.cells[ud]) fd = 0;
-    Point3 lo{}, hi{};
-    lo[static_cast<std::size_t>(e1)] = F(e1, c1), hi[static_cast<std::size_t>(e1)] = F(e1, c1 + 1);
-    lo[static_cast<std::size_t>(e2)] = F(e2, c2), hi[static_cast<std::size_t>(e2)] = F(e2, c2 + 1);
-    return flux_of.flux(d, F(d, fd), lo, hi);
-  };
+  const LevelFlux flux{fr, flux_of, periodic};
   // A_q along q edges at p faces (ip), q cells (iq): base from the g faces of the lowest g face.
   for (int iq = 0; iq < fr.n[uq]; ++iq) {
     double base = 0;
@@ -110,6 +117,45 @@ EdgeTable gauge_edges(const Frame& fr, const FluxQuadrature& flux_of, const std:
   return t;
 }
 
+// gauge_edges's values one period further along the periodic directions (shift: -1, 0, +1 per
+// direction) minus its values: the sums start at the grid's lower faces, so with a net flux
+// through a period the potential is periodic only up to these sums (A_q gains the flux through
+// the lowest g plane's row along p; A_q and A_p the fluxes through a whole column along g).
+EdgeTable gauge_period_jumps(const Frame& fr, const FluxQuadrature& flux_of, const std::array<bool, 3>& periodic,
+                             CoordinateSystem cs, const std::array<int, 3>& shift) {
+  const GaugeRoles R = gauge_roles(cs);
+  const int p = R.p, q = R.q, g = R.g;
+  const auto up = static_cast<std::size_t>(p), uq = static_cast<std::size_t>(q), ug = static_cast<std::size_t>(g);
+  const std::int64_t gp = fr.first[up], gq = fr.first[uq];
+  EdgeTable t(fr);
+  const LevelFlux flux{fr, flux_of, periodic};
+  auto at = [&](int a, std::int64_t ip, std::int64_t iq, std::int64_t ig) -> double& {
+    int idx[3];
+    idx[up] = static_cast<int>(ip), idx[uq] = static_cast<int>(iq), idx[ug] = static_cast<int>(ig);
+    return t(a, idx[0], idx[1], idx[2]);
+  };
+  const int sp = shift[up], sg = shift[ug];
+  for (int iq = 0; iq < fr.n[uq]; ++iq) {  // A_q: p faces (ip), q cells
+    double row = 0;                          // along p through the lowest g plane
+    if (sp != 0)
+      for (std::int64_t G = 0; G < fr.cells[up]; ++G) row += R.sign * flux(g, 0, p, G, q, gq + iq);
+    for (int ip = 0; ip <= fr.n[up]; ++ip) {
+      double column = 0;  // along g through the p face
+      if (sg != 0)
+        for (std::int64_t h = 0; h < fr.cells[ug]; ++h) column -= R.sign * flux(p, gp + ip, q, gq + iq, g, h);
+      for (int ig = 0; ig <= fr.n[ug]; ++ig) at(q, ip, iq, ig) = sp * row + sg * column;
+    }
+  }
+  if (sg != 0)
+    for (int iq = 0; iq <= fr.n[uq]; ++iq)  // A_p: p cells, q faces
+      for (int ip = 0; ip < fr.n[up]; ++ip) {
+        double column = 0;
+        for (std::int64_t h = 0; h < fr.cells[ug]; ++h) column += R.sign * flux(q, gq + iq, p, gp + ip, g, h);
+        for (int ig = 0; ig <= fr.n[ug]; ++ig) at(p, ip, iq, ig) = sg * column;
+      }
+  return t;
+}
+
 }  // namespace
 
 Frame EdgeBuilder::frame(const Block& b, const BlockKey& key) const {
@@ -134,6 +180,11 @@ EdgeTable EdgeBuilder::edges(const Frame& f) const {
   return phi_average ? axisymmetric_edges(f, cs == CoordinateSystem::cylindrical, q, closure) : gauge_edges(f, q, periodic, cs);
 }
 
+EdgeTable EdgeBuilder::period_jumps(const Frame& f, const std::array<int, 3>& shift) const {
+  // 2D: Psi of a row marches along R (theta) only, so it is periodic in z (r) as it is.
+  return phi_average ? EdgeTable(f) : gauge_period_jumps(f, q, periodic, cs, shift);
+}
+
 void match_finer_leaves(const Block& b, const Frame& fb, const EdgeBuilder& builder, std::span<const BlockKey> leaves,
                         EdgeTable& t) {
   for (const BlockKey& key : leaves) {
@@ -141,16 +192,27 @@ void match_finer_leaves(const Block& b, const Frame& fb, const EdgeBuilder& buil
     const Frame ff = builder.frame(b, key);
     // The leaf's position, shifted by a period where it touches b across a periodic face.
     std::array<std::int64_t, 3> first = ff.first;
+    std::array<int, 3> periods{};  // the shift in periods, per direction
     bool touches = true;  // closed boxes intersect (in the coarse level's indices, times 2)
     for (std::size_t d = 0; d < 3 && touches; ++d) {
       if (!fb.used[d]) continue;
       auto meets = [&](std::int64_t f) { return 2 * fb.first[d] <= f + ff.n[d] && f <= 2 * (fb.first[d] + fb.n[d]); };
       touches = meets(first[d]);
       for (const std::int64_t shift : {-ff.cells[d], ff.cells[d]})
-        if (!touches && builder.periodic[d] && meets(first[d] + shift)) touches = true, first[d] += shift;
+        if (!touches && builder.periodic[d] && meets(first[d] + shift)) {
+          touches = true, first[d] += shift;
+          periods[d] = shift > 0 ? 1 : -1;
+        }
     }
     if (!touches) continue;
     EdgeTable fine = builder.edges(ff);
+    // Seen across a periodic face the leaf's edges are those one period away: the potential's
+    // sums from the grid's lower faces gain the net flux through a period there.
+    if (periods != std::array<int, 3>{}) {
+      const EdgeTable jump = builder.period_jumps(ff, periods);
+      for (std::size_t a = 0; a < 3; ++a)
+        for (std::size_t m = 0; m < fine.value[a].size(); ++m) fine.value[a][m] += jump.value[a][m];
+    }
     for (int a = 0; a < 3; ++a) {
       const auto& e = t.extent[static_cast<std::size_t>(a)];
       for (int k = 0; k < e[2]; ++k)

@@ -12,7 +12,9 @@
 //   origin get exactly 0 (zero-area faces carry zero flux).
 // Every value depends only on the edge's global position on its level (sums in a fixed order from
 // the grid's lower faces), so blocks that share an edge compute the same bits. On refined grids an
-// edge on the boundary of a leaf one level finer takes the sum of the fine edges along it.
+// edge on the boundary of a leaf one level finer takes the sum of the fine edges along it; across
+// a periodic face of a 3D grid the leaf's edges one period away (its own plus the net flux through
+// a period: a potential with net flux through the domain is periodic only up to that sum).
 #include <span>
 #include <vector>
 
@@ -34,6 +36,9 @@ struct EdgeBuilder {
   // The frame of the leaf `key` of blocks shaped like b (all blocks have b's cell counts).
   Frame frame(const Block& b, const BlockKey& key) const;
   EdgeTable edges(const Frame& f) const;
+  // edges(f) one period further along the periodic directions (shift: -1, 0, +1 each) minus
+  // edges(f): a leaf seen across a periodic face (zero on 2D grids).
+  EdgeTable period_jumps(const Frame& f, const std::array<int, 3>& shift) const;
 };
 
 // Replaces the edges of b (frame fb) that lie on the boundary of a leaf one level finer by the sum

@@ -1,6 +1,8 @@
 #include "source_integrals.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace remnant::handoff {
 namespace {
@@ -21,7 +23,8 @@ bool owned_by_finer(const SourceData& src, std::size_t l, const Point3& X) {
   return false;
 }
 
-void add(Integrals& s, double w, double D, double Sx, double Sy, double tau, const Point3& X, double em, double emt) {
+void add(Integrals& s, double w, double D, double Sx, double Sy, double tau, const Point3& X, double em, double emt, bool matter) {
+  if (matter) s.matter_rest_mass += w * D;
   s.magnetic_energy += w * em;
   s.magnetic_energy_toroidal += w * emt;
   s.rest_mass += w * D;
@@ -31,8 +34,20 @@ void add(Integrals& s, double w, double D, double Sx, double Sy, double tau, con
 
 }  // namespace
 
-SourceIntegrals integrate_source(const SourceData& src, const TargetDomain& target) {
+double smallest_density(const SourceData& src) {
+  double m = std::numeric_limits<double>::infinity();
+  for (const SourceLevel& L : src.levels) {
+    const auto& rho = L.fields.at("rho");
+    for (std::size_t q = 0; q < L.size(); ++q)
+      if (L.valid[q]) m = std::min(m, rho[q]);
+  }
+  return std::isfinite(m) ? m : 0.0;
+}
+
+SourceIntegrals integrate_source(const SourceData& src, const TargetDomain& target, double atmosphere_rho) {
   SourceIntegrals out;
+  out.atmosphere_rho = atmosphere_rho;
+  out.rho_min = smallest_density(src);
   for (std::size_t l = 0; l < src.levels.size(); ++l) {
     const SourceLevel& L = src.levels[l];
     const double h = L.delta[0], dV = L.delta[0] * L.delta[1] * L.delta[2];
@@ -40,6 +55,7 @@ SourceIntegrals integrate_source(const SourceData& src, const TargetDomain& targ
     const auto& Sx = L.fields.at("St[0]");
     const auto& Sy = L.fields.at("St[1]");
     const auto& tau = L.fields.at("taut");
+    const auto& rho = L.fields.at("rho");
     const auto em_it = L.fields.find("Emag"), emt_it = L.fields.find("Emagtor");
     const double* em = em_it == L.fields.end() ? nullptr : em_it->second.data();
     const double* emt = emt_it == L.fields.end() ? nullptr : emt_it->second.data();
@@ -51,10 +67,11 @@ SourceIntegrals integrate_source(const SourceData& src, const TargetDomain& targ
           const Point3 X{L.x(0, i), L.x(1, j), L.x(2, k)};
           if (owned_by_finer(src, l, X)) continue;
           const double e = em ? em[q] : 0.0, et = emt ? emt[q] : 0.0;
-          add(out.all, dV, D[q], Sx[q], Sy[q], tau[q], X, e, et);
-          if (target.contains(target.fold(X))) add(out.covered, dV, D[q], Sx[q], Sy[q], tau[q], X, e, et);
+          const bool matter = rho[q] > atmosphere_rho;
+          add(out.all, dV, D[q], Sx[q], Sy[q], tau[q], X, e, et, matter);
+          if (target.contains(target.fold(X))) add(out.covered, dV, D[q], Sx[q], Sy[q], tau[q], X, e, et, matter);
           const double f = target.fraction_inside(X, h);
-          if (f > 0) add(out.grid, f * dV, D[q], Sx[q], Sy[q], tau[q], X, e, et);
+          if (f > 0) add(out.grid, f * dV, D[q], Sx[q], Sy[q], tau[q], X, e, et, matter);
         }
   }
   return out;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <span>
 
@@ -29,12 +30,13 @@ double MagnetisedTov::dP(double r) const {
 std::array<double, 3> MagnetisedTov::densitised(double x, double y, double z) const {
   const double r = std::sqrt(x * x + y * y + z * z);
   const double p = P(r);
-  if (p <= 0) return {0, 0, 0};
+  const auto& u = options.uniform;
+  if (p <= 0) return u;
   const double g = r > 0 ? 2 * kAb * p * dP(r) / r : 0.0;  // d(A_b P^2)/dx^i = g x^i
   const double t = options.toroidal * p * p * z;          // B^phi (coordinate), densitised
   if (options.octant_symmetric)  // curl of A_b P^2 (x, -y, 0), plus the toroidal field
-    return {g * y * z - t * y, g * x * z + t * x, -2 * g * x * y};
-  return {-g * x * z - t * y, -g * y * z + t * x, 2 * kAb * p * p + g * (x * x + y * y)};
+    return {u[0] + g * y * z - t * y, u[1] + g * x * z + t * x, u[2] - 2 * g * x * y};
+  return {u[0] - g * x * z - t * y, u[1] - g * y * z + t * x, u[2] + 2 * kAb * p * p + g * (x * x + y * y)};
 }
 
 MagnetisedTov::MagnetisedTov(const MagnetisedTovOptions& o) : options(o) {
@@ -43,7 +45,7 @@ MagnetisedTov::MagnetisedTov(const MagnetisedTovOptions& o) : options(o) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   // One folder per data set (several live at once in one process).
   std::string name = "handoff_mag_" + std::to_string(pid) + (o.fine ? "_fine" : "") + (o.toroidal == 0 ? "_pol" : "") +
-                     (o.octant_symmetric ? "_oct" : "");
+                     (o.octant_symmetric ? "_oct" : "") + (o.uniform != std::array<double, 3>{} ? "_uni" : "");
   for (int d = 0; d < 3; ++d)
     if (o.mirrors[static_cast<std::size_t>(d)]) name += "_m" + std::to_string(d);
   dir = std::filesystem::temp_directory_path() / name;
@@ -127,11 +129,27 @@ double field_outside(Context& ctx) {
   return m;
 }
 
+std::string parfile_without_metric_solve() {
+  std::ifstream in(std::string(REMNANT_SOURCE_DIR) + "/parfiles/handoff_tov_cyl_2d.yaml");
+  std::string out, line;
+  bool in_xcfc = false;
+  while (std::getline(in, line)) {
+    if (line.rfind("XCFC:", 0) == 0) in_xcfc = true;
+    else if (!line.empty() && line[0] != ' ' && line[0] != '#') in_xcfc = false;
+    if (in_xcfc) continue;
+    if (line.rfind("active_thorns:", 0) == 0)
+      if (const auto p = line.find(", XCFC"); p != std::string::npos) line.erase(p, 6);
+    out += line + "\n";
+  }
+  return out;
+}
+
 Result hand_off(const MagnetisedTov& data, const std::vector<std::string>& overrides,
-                const std::function<void(Context&, Result&)>& inspect) {
+                const std::function<void(Context&, Result&)>& inspect, const std::string* parfile_text) {
   static const ThornCatalog catalog(remnant_compiled_thorns());
   SimulationOptions o;
   o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/handoff_tov_cyl_2d.yaml";
+  o.parfile_text = parfile_text;
   o.quiet = true;
   std::string files = "HandOff::files=[";
   for (std::size_t i = 0; i < data.files.size(); ++i) files += (i ? "," : "") + data.files[i];

@@ -6,7 +6,8 @@
 // - dipole (default): the poloidal field of A_phi = A_b varpi^2 P^2 and the toroidal field
 //   B_phi-hat = A_t varpi z P^2: a pseudo-vector mirror image of itself across z = 0 only;
 // - octant_symmetric: the curl of A = A_b P^2 (x, -y, 0) and the same toroidal field: a
-//   pseudo-vector mirror image of itself across x = 0, y = 0 and z = 0 (what an octant holds).
+//   pseudo-vector mirror image of itself across x = 0, y = 0 and z = 0 (what an octant holds);
+// plus, where set, a uniform densitised field everywhere (flux through every plane of the data).
 #include <array>
 #include <filesystem>
 #include <functional>
@@ -31,6 +32,7 @@ struct MagnetisedTovOptions {
   bool fine = false;                        // a third level (spacing 0.25 on [-9, 9]^3)
   std::array<bool, 3> mirrors{};           // data only at x, y, z >= 0 where set (ReflectionSymmetry)
   bool octant_symmetric = false;           // the octant_symmetric field instead of the dipole
+  std::array<double, 3> uniform{};         // a uniform densitised field added everywhere (net flux through the box)
 };
 
 struct MagnetisedTov {
@@ -72,8 +74,13 @@ struct Result {
 // The hand-off of the data with these overrides (after the defaults: no evolution, Analysis every
 // step, HandOff::buffer_zones = 2).
 // inspect: called with the finished run (before the report's fields are read from it).
+// parfile_text: instead of parfiles/handoff_tov_cyl_2d.yaml (e.g. parfile_without_metric_solve()).
 Result hand_off(const MagnetisedTov& data, const std::vector<std::string>& overrides,
-                const std::function<void(Context&, Result&)>& inspect = {});
+                const std::function<void(Context&, Result&)>& inspect = {}, const std::string* parfile_text = nullptr);
+
+// parfiles/handoff_tov_cyl_2d.yaml without XCFC (the flat metric stays): for grids XCFC's
+// elliptic solver does not take (periodic Cartesian faces), where only the import is checked.
+std::string parfile_without_metric_solve();
 
 // The field the data do not have: max |Bface| on the faces of cells centred beyond radius 9.
 double field_outside(Context& ctx);

@@ -51,7 +51,8 @@ std::vector<std::string> write_synthetic_carpet(const std::string& dir, const Sy
     for (int d = 0; d < 3; ++d)
       text += std::string("ReflectionSymmetry::reflection_") + static_cast<char>('x' + d) + " = \"" +
               (spec.reflection[static_cast<std::size_t>(d)] ? "yes" : "no") + "\"\n";
-    if (!spec.ghosts_written) text += "CarpetIOHDF5::output_ghost_points = \"no\"\n";
+    if (!spec.ghosts_written) text += "CarpetIOHDF5::" + spec.ghosts_parameter + " = \"no\"\n";
+    text += spec.extra_parameters;
     (spec.parameters_as_bytes ? write_bytes : write_text)(files[0], "Parameters and Global Attributes", "All Parameters", text);
   }
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -36,6 +36,8 @@ struct SyntheticCarpet {
   bool write_parameters = true;  // ReflectionSymmetry::reflection_* in "All Parameters"
   bool parameters_as_bytes = false;  // the dump as a byte array (as CarpetIOHDF5 writes it) or a string
   bool ghosts_written = true;     // false: CarpetIOHDF5::output_ghost_points = "no" (no ghost, no symmetry points)
+  std::string ghosts_parameter = "output_ghost_points";  // the one set to "no" (out3D_ghosts: 3D slice output)
+  std::string extra_parameters;  // more lines of the parameter dump
   bool write_bbox = true;         // the cctk_bbox attribute (1 on the grid's outer and symmetry faces)
   std::string stem = "data";
 };

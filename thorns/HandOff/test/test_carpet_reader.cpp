@@ -125,6 +125,24 @@ TEST(CarpetReader, WithoutGhostPointsInTheFiles) {
   }));
 }
 
+// One run often writes both CarpetIOHDF5 outputs: the 3D slices (out3D_vars, "<var>.xyz.file_N.h5")
+// without ghosts (out3D_ghosts = "no", as in the Einstein Toolkit's TOV test run read for the
+// README) and the volume output (out_vars, "<var>.file_N.h5") with them (output_ghost_points at
+// its default). The volume files keep their ghost points (read as data before: NaN).
+TEST(CarpetReader, VolumeOutputKeepsGhostsWhenOnly3DSlicesDropThem) {
+  expect_exact_octant(Files([](synthetic::SyntheticCarpet& s) { s.extra_parameters = "CarpetIOHDF5::out3D_ghosts = \"no\"\n"; }));
+}
+
+// The 3D slice output follows out3D_ghosts (and not output_ghost_points).
+TEST(CarpetReader, SliceOutputWithoutGhostPoints) {
+  expect_exact_octant(Files([](synthetic::SyntheticCarpet& s) {
+    s.stem = "data.xyz";
+    s.ghosts_written = false;
+    s.ghosts_parameter = "out3D_ghosts";
+    s.extra_parameters = "CarpetIOHDF5::output_ghost_points = \"yes\"\n";
+  }));
+}
+
 // Files without cctk_bbox: the outer boundary is the coarsest level's edge.
 TEST(CarpetReader, WithoutBoundingBoxAttribute) {
   expect_exact_octant(Files([](synthetic::SyntheticCarpet& s) { s.write_bbox = false; }));

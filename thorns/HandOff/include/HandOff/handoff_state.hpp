@@ -18,7 +18,9 @@ struct Totals {
 
 struct HandOffReport {
   Totals source_all, source_covered, source_grid;  // 3D: all data, the grid unfolded, the grid itself
-  double outside_fraction = 0;
+  double outside_fraction = 0;   // of the matter's rest mass (rho > atmosphere_rho), outside the unfolded grid
+  double atmosphere_rho = 0;      // HandOff::atmosphere_density as used
+  double source_matter_rest_mass = 0;  // 3D rest mass of the points with rho > atmosphere_rho
   double raw_rest_mass = 0;       // the grid's rest mass of the interpolated D, before normalisation
   double normalisation = 1;       // factor applied to the imported conserved variables
   Totals imported;                // the grid's integrals of the imported conserved variables
