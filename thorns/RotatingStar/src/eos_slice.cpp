@@ -66,6 +66,31 @@ class PiecewisePolytropeSlice final : public tov::ColdSlice {
   std::vector<double> a_, H_bounds_;
 };
 
+// A table slice at fixed T: rho(H) and Ye from the sampled slice, eps and p from the table's own
+// interpolation at (rho, T, Ye), so that the temperature the evolution recovers from eps on the grid
+// is the slice's (the sampled eps differs from the table's by ~1e-4 in places, which in degenerate
+// matter is a temperature error of ~0.5 MeV at T = 1 MeV), as the TOV thorn's table slice does.
+class TableSlice final : public tov::ColdSlice {
+ public:
+  TableSlice(const eos::Tabulated<>& table, double T, std::unique_ptr<tov::ColdSlice> sampled)
+      : table_(table), T_(T), sampled_(std::move(sampled)) {}
+  tov::ColdState at(double H) const override {
+    tov::ColdState s = sampled_->at(H);
+    if (s.rho >= table_.bounds().rho_min) {
+      const eos::Thermo th = table_.thermo(s.rho, T_, s.ye);
+      s.eps = th.eps;
+      s.press = th.press;
+    }
+    return s;
+  }
+  double log_enthalpy(double rho) const override { return sampled_->log_enthalpy(rho); }
+
+ private:
+  const eos::Tabulated<>& table_;
+  double T_;
+  std::unique_ptr<tov::ColdSlice> sampled_;
+};
+
 }  // namespace
 
 std::unique_ptr<tov::ColdSlice> piecewise_polytrope_slice(double K0, const std::vector<double>& gammas,
@@ -74,8 +99,9 @@ std::unique_ptr<tov::ColdSlice> piecewise_polytrope_slice(double K0, const std::
 }
 
 std::unique_ptr<tov::ColdSlice> beta_slice(const eos::Tabulated<>& table, double T) {
-  const eos::BetaSlice s = eos::beta_equilibrium_slice(table, temperature(table, T), densities(table));
-  return tov::tabulated_slice(s.rho, s.press, s.eps, s.ye);
+  T = temperature(table, T);
+  const eos::BetaSlice s = eos::beta_equilibrium_slice(table, T, densities(table));
+  return std::make_unique<TableSlice>(table, T, tov::tabulated_slice(s.rho, s.press, s.eps, s.ye));
 }
 
 std::unique_ptr<tov::ColdSlice> fixed_ye_slice(const eos::Tabulated<>& table, double ye, double T) {
@@ -91,7 +117,7 @@ std::unique_ptr<tov::ColdSlice> fixed_ye_slice(const eos::Tabulated<>& table, do
     press.push_back(table.press(r, T, ye));
     eps.push_back(table.eps(r, T, ye));
   }
-  return tov::tabulated_slice(rho, press, eps, yes);
+  return std::make_unique<TableSlice>(table, T, tov::tabulated_slice(rho, press, eps, yes));
 }
 
 std::string check_density_in_table(const eos::Tabulated<>& table, double rho_c) {

@@ -18,6 +18,7 @@ class ParfileRun {
   // `tag` names the temporary out_dir (<tmp>/remnant_<tag>_<pid>).
   ParfileRun(const std::string& parfile, const std::string& tag, const std::vector<std::string>& overrides);
   Context& context() { return sim_->context(); }
+  const std::filesystem::path& out_dir() const { return out_.path; }
   // Analysis's rows, one per analysed step.
   const std::vector<analysis::StarDiagnostics>& history() {
     return context().service<analysis::History>("Analysis::history").rows;

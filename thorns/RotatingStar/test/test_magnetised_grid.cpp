@@ -121,6 +121,31 @@ TEST(MagnetisedDrns, CylindricalPhiFaces) {
   EXPECT_GT(std::log2(err[0] / err[1]), 1.8);
 }
 
+// parfiles/magnetized_drns_cyl_2d.yaml, the one-core variant of the paper's test (2D cylindrical,
+// three levels to dx = 0.25, dt = 0.44 instead of 3.2e-3): at t = 0 the model's field and star.
+// Measured: E_mag -1.4e-3, B_max -2.6e-3, J -4e-7, M_0 -2.7e-4 (100 steps, 0.22 ms: rho_c 3e-4,
+// E_mag 6.8e-4, J 5e-7, divB_max 0).
+TEST(MagnetisedDrns, CylindricalVariantStartsWithTheModel) {
+  const auto slice = remnant::tov::polytrope_slice(100.0, 2.0, 0.5);
+  remnant::rotstar::RnsParameters p = remnant::rotstar::test::drns_parameters();
+  p.field.K_m = 3;
+  p.field.m = 1;
+  p.nr = 400;
+  const remnant::rotstar::RotatingStarModel model(*slice, p);
+  const auto& g = model.globals();
+  const auto row = start("magnetized_drns_cyl_2d.yaml", {"RotatingStar::nr=400"});
+  ASSERT_TRUE(row.magnetic.has_value());
+  const auto& mag = *row.magnetic;
+  const double B_max_model = g.B_max * remnant::hydrobase::kGaussPerCodeB;
+  std::printf("magnetized_drns_cyl_2d at t = 0: E_mag %+.2e, B_max %+.2e, J %+.2e, M_0 %+.2e, divB_max %.1e\n", mag.E_mag / g.H_mag - 1,
+              mag.B_max_gauss / B_max_model - 1, row.rotation.J / g.J - 1, row.rest_mass / g.M_rest - 1, mag.divB_max);
+  EXPECT_NEAR(mag.E_mag / g.H_mag, 1, 3e-3);
+  EXPECT_NEAR(mag.B_max_gauss / B_max_model, 1, 5e-3);
+  EXPECT_NEAR(row.rotation.J / g.J, 1, 1e-3);
+  EXPECT_NEAR(row.rest_mass / g.M_rest, 1, 1e-3);
+  EXPECT_LT(mag.divB_max, 1e-12);
+}
+
 // The largest poloidal (meridional) speed sqrt(gamma_11 v1^2 + gamma_22 v2^2) where rho > 1e-2 rho_max
 // after `steps` steps of magnetized_drns.yaml on its base level only (dr = 1.56; one rank).
 double poloidal_speed_after(int steps, std::vector<std::string> extra) {

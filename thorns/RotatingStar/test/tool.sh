@@ -37,6 +37,9 @@ check sequence 1 "the sequence stops here" "$exe" --rho-c=1.28e-3 --nr=100 --seq
 rows=$(($(wc -l <"$tmp/seq.tsv") - 1))
 if [ "$rows" = 4 ] && head -1 "$tmp/seq.tsv" | grep -q "M_komar"; then echo "ok   sequence_tsv ($rows models before shedding)";
 else echo "FAIL sequence_tsv: $rows rows"; cat "$tmp/seq.tsv"; fail=1; fi
+check sequence_rho 0 "^wrote " "$exe" --rho-c=1e-3 --axis-ratio=0.8 --nr=100 --sequence=rho-c:8e-4:1.6e-3:3 --out="$tmp/rho.tsv"
+if [ "$(cut -f1 "$tmp/rho.tsv" | tr '\n' ' ')" = "rho_c 0.0008 0.0012 0.0016 " ]; then echo "ok   sequence_rho_tsv (central densities)";
+else echo "FAIL sequence_rho_tsv:"; cat "$tmp/rho.tsv"; fail=1; fi
 table="$src/../shared/eos/SFHo_reduced_39r_39t_20y.h5"
 if [ -f "$table" ]; then
   check table_density 1 "outside the EOS table's density range" "$exe" --eos-table="$table" --rho-c=100 --omega=0.01

@@ -1,7 +1,8 @@
 #pragma once
 // The barotropic slices RotatingStar builds on (besides a polytrope): a table at fixed T (T_min
 // when T < 0), either in neutrinoless beta equilibrium or at a fixed Ye, over the table's whole
-// density range (800 logarithmic points). T or Ye outside the table throw std::runtime_error.
+// density range (800 logarithmic points) for rho(H) and Ye, with eps and p from the table at (rho, T,
+// Ye) so that the grid's recovered temperature is T. T or Ye outside the table throw std::runtime_error.
 #include <memory>
 #include <stdexcept>
 #include <string>
