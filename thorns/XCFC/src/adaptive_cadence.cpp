@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "cadence.hpp"
 #include "remnant/coordinates.hpp"
@@ -39,10 +40,12 @@ PredictionError prediction_error(Context& ctx) {
     const Field beta0 = b->field(metric, Metric::idx::beta), beta1 = b->field(metric, Metric::idx::beta + 1),
                 beta2 = b->field(metric, Metric::idx::beta + 2);
     const CoordinateSystem coords = b->coordinates;
+    std::vector<double> sin_theta(static_cast<std::size_t>(b->n[1]));  // once per row, not per cell
+    for (int j = 0; j < b->n[1]; ++j) sin_theta[static_cast<std::size_t>(j)] = std::sin(b->x(1, j));
     for_interior(*b, [&](int i, int j, int k) {
       local[0] = std::max(local[0], std::abs(psi(i, j, k) - psi_p(i, j, k)));
       local[1] = std::max(local[1], std::abs(alpha(i, j, k) - alpha_p(i, j, k)));
-      const Point3 f = coords::metric_diagonal(coords, {b->x(0, i), b->x(1, j), b->x(2, k)});
+      const Point3 f = coords::metric_diagonal(coords, {b->x(0, i), b->x(1, j), b->x(2, k)}, sin_theta[static_cast<std::size_t>(j)]);
       const double d0 = beta0(i, j, k) - beta_p0(i, j, k), d1 = beta1(i, j, k) - beta_p1(i, j, k),
                    d2 = beta2(i, j, k) - beta_p2(i, j, k);
       local[2] = std::max(local[2], std::sqrt(f[0] * d0 * d0 + f[1] * d1 * d1 + f[2] * d2 * d2));
