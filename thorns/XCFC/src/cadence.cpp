@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "adaptive_cadence.hpp"
 #include "remnant/vars/Spacetime.hpp"
 #include "remnant/vars/XCFC.hpp"
 #include "runtime.hpp"
@@ -42,6 +43,22 @@ std::optional<double> solve_extrapolation_weight(Context& ctx) {
   const Runtime& rt = runtime(ctx);
   if (rt.solve_history < 2 || !(rt.t_solve_last > rt.t_solve_before)) return std::nullopt;
   return (ctx.time() - rt.t_solve_last) / (rt.t_solve_last - rt.t_solve_before);
+}
+
+MetricExtrapolation metric_extrapolation(Context& ctx) {
+  const Runtime& rt = runtime(ctx);
+  MetricExtrapolation e;
+  const std::string kind = ctx.param<std::string>("XCFC", "extrapolation");
+  const std::optional<double> weight = extrapolation_weight(ctx);
+  if (kind == "hold" || !weight) return e;
+  e.w = *weight;
+  if (kind == "quadratic" && rt.history >= 3 && rt.t_before > rt.t_earlier) {
+    e.kind = MetricExtrapolation::Kind::quadratic;
+    e.l = lagrange_weights(ctx.time(), {rt.t_last, rt.t_before, rt.t_earlier});
+  } else {
+    e.kind = MetricExtrapolation::Kind::linear;
+  }
+  return e;
 }
 
 void load_warm_start(Context& ctx, const GridBridge& br, const SpacetimeGroups& g, int potentials, XcfcState& st,
@@ -131,7 +148,7 @@ void cadence(Context& ctx) {
   const std::int64_t every = ctx.param<std::int64_t>("XCFC", "solve_every");
   if (every <= 0) return;
   ++rt.steps_since_solve;
-  if (rt.steps_since_solve >= every) {
+  if (rt.steps_since_solve >= solve_interval(ctx)) {
     rt.stage = Stage::solve, rt.reason = "cadence", rt.sources_due = true;
     return;
   }
@@ -154,19 +171,16 @@ void extrapolate(Context& ctx) {
   Runtime& rt = runtime(ctx);
   if (rt.stage != Stage::extrapolate) return;
   rt.stage = Stage::check_trigger;
-  const std::optional<double> weight = extrapolation_weight(ctx);
-  if (!weight) return;
-  const double w = *weight;
+  const MetricExtrapolation e = metric_extrapolation(ctx);
+  if (e.kind == MetricExtrapolation::Kind::hold) return;
   const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
-  const bool quadratic = ctx.param<std::string>("XCFC", "extrapolation") == "quadratic" && rt.history >= 3 &&
-                         rt.t_before > rt.t_earlier;
-  const std::array<double, 3> l = quadratic ? lagrange_weights(ctx.time(), {rt.t_last, rt.t_before, rt.t_earlier})
-                                            : std::array<double, 3>{0, 0, 0};
+  const double w = e.w;
+  const std::array<double, 3> l = e.l;
   for (Block* b : ctx.grid().local_blocks())
     for (int c = 0; c < Metric::ncomp; ++c) {
       Field m = b->field(metric, c);
       Field last = b->field(hist, History::idx::psi_last + c), before = b->field(hist, History::idx::psi_before + c);
-      if (quadratic) {
+      if (e.kind == MetricExtrapolation::Kind::quadratic) {
         Field earlier = b->field(hist, History::idx::psi_earlier + c);
         for_interior(*b, [&](int i, int j, int k) {
           m(i, j, k) = l[0] * last(i, j, k) + l[1] * before(i, j, k) + l[2] * earlier(i, j, k);

@@ -24,6 +24,22 @@ std::array<double, 3> lagrange_weights(double t, const std::array<double, 3>& ti
 // The weight w of last + w (last - before) at the current time, or none before two solves.
 std::optional<double> extrapolation_weight(Context& ctx);
 
+// What XCFC_Extrapolate makes of XCFC::metric_history at the current time: XCFC::extrapolation, or
+// the hold (linear) while the history has fewer than two (three) metrics.
+struct MetricExtrapolation {
+  enum class Kind { hold, linear, quadratic } kind = Kind::hold;
+  double w = 0;               // linear: last + w (last - before)
+  std::array<double, 3> l{};  // quadratic: Lagrange weights of last, before, earlier
+  double operator()(double last, double before, double earlier) const {
+    switch (kind) {
+      case Kind::linear: return last + w * (last - before);
+      case Kind::quadratic: return l[0] * last + l[1] * before + l[2] * earlier;
+      default: return last;
+    }
+  }
+};
+MetricExtrapolation metric_extrapolation(Context& ctx);
+
 // The warm starts: the last solve's psi, alpha psi and potentials, or, once two solves are
 // recorded, their linear extrapolation in time to now (w = (t - t_last) / (t_last - t_before)): the
 // change between solves is then left to second order, which saves V-cycles. With updates between

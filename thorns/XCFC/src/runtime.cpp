@@ -59,11 +59,11 @@ XcfcSolver& solver(Context& ctx) {
 }
 
 std::string save_persistent(const Runtime& rt) {
-  char text[400];  // 11 fields: at most 5 x 24 (hexadecimal floats) + 6 x 20 characters and the spaces
-  std::snprintf(text, sizeof text, "%lld %lld %a %a %d %a %lld %lld %a %a %d", static_cast<long long>(rt.steps_since_solve),
+  char text[400];  // 13 fields: at most 6 x 24 (hexadecimal floats) + 7 x 20 characters and the spaces
+  std::snprintf(text, sizeof text, "%lld %lld %a %a %d %a %lld %lld %a %a %d %lld %a", static_cast<long long>(rt.steps_since_solve),
                 static_cast<long long>(rt.solves), rt.t_last, rt.t_before, rt.history, rt.t_earlier,
                 static_cast<long long>(rt.updates), static_cast<long long>(rt.update_cycles), rt.t_solve_last,
-                rt.t_solve_before, rt.solve_history);
+                rt.t_solve_before, rt.solve_history, static_cast<long long>(rt.interval), rt.update_prediction);
   return text;
 }
 
@@ -83,9 +83,14 @@ void restore_persistent(Runtime& rt, const std::string& text) {
   if (s >> rt.updates >> rt.update_cycles >> t_solve_last >> t_solve_before >> rt.solve_history) {
     rt.t_solve_last = std::strtod(t_solve_last.c_str(), nullptr);
     rt.t_solve_before = std::strtod(t_solve_before.c_str(), nullptr);
+    // The adaptive interval (XCFC::cadence_tolerance) and the updates' largest prediction error
+    // came later still: 0 starts them afresh.
+    std::string update_prediction;
+    if (!(s >> rt.interval >> update_prediction)) rt.interval = 0, update_prediction = "0";
+    rt.update_prediction = std::strtod(update_prediction.c_str(), nullptr);
     return;
   }
-  rt.updates = rt.update_cycles = 0;
+  rt.updates = rt.update_cycles = 0, rt.interval = 0, rt.update_prediction = 0;
   rt.t_solve_last = rt.t_last, rt.t_solve_before = rt.t_before, rt.solve_history = std::min(rt.history, 2);
 }
 

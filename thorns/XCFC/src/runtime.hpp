@@ -9,6 +9,7 @@
 #include <string>
 
 #include "XCFC/xcfc_system.hpp"
+#include "adaptive_cadence.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::xcfc {
@@ -55,6 +56,12 @@ struct Runtime {
     bool two = false;  // A_before holds the solve before the last
     std::array<CompositeField, 6> last, before;
   } update_A;
+  // XCFC::cadence_tolerance: matter steps from the last solve to the next (0: not adapted yet;
+  // checkpointed). The last solve's prediction error and the largest of the updates' since the
+  // solve before it, for xcfc.tsv.
+  std::int64_t interval = 0;
+  PredictionError prediction;
+  double update_prediction = 0;
   bool tsv_started = false;  // xcfc.tsv created (fresh run) or trimmed (recovered run) by this process
   bool warned_theta = false;
 };

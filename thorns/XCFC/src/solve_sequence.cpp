@@ -8,6 +8,7 @@
 #include <string>
 
 #include "XCFC/xcfc_system.hpp"
+#include "adaptive_cadence.hpp"
 #include "cadence.hpp"
 #include "grid_bridge.hpp"
 #include "remnant/vars/Spacetime.hpp"
@@ -96,17 +97,24 @@ void shift_and_finish(Context& ctx, SolveInProgress& s) {
   s.sv.solve_shift(s.src.E, s.src.S, s.st, s.stats, s.set);
   shift_potentials(ctx, s.potentials, s.update);
   store_lapse_shift(s.br, s.g, s.potentials, s.st, s.update);
+  Runtime& rt = runtime(ctx);
+  // The metric against what the cadence predicted for now (adaptive_cadence.hpp), before the
+  // history takes it; the interval it closes.
+  const PredictionError error = prediction_error(ctx);
+  const std::int64_t steps = rt.steps_since_solve;
   record_history(ctx, s.update);
   warn_unconverged(ctx, s.stats);
-  Runtime& rt = runtime(ctx);
   if (s.update) {
     ++rt.updates;
     rt.update_cycles += s.stats.psi.cycles + s.stats.alpha_psi.cycles + s.stats.beta.cycles();
+    rt.update_prediction = std::max(rt.update_prediction, error.largest());
     rt.solve.reset();
     return;
   }
-  write_tsv(ctx, rt.reason, s.stats, std::chrono::duration<double>(std::chrono::steady_clock::now() - s.t0).count());
-  rt.updates = rt.update_cycles = 0;  // logged with this solve
+  rt.prediction = error;
+  write_tsv(ctx, rt.reason, s.stats, steps, std::chrono::duration<double>(std::chrono::steady_clock::now() - s.t0).count());
+  adapt_interval(ctx, steps, error);
+  rt.updates = rt.update_cycles = 0, rt.update_prediction = 0;  // logged with this solve
   rt.solve.reset();
 }
 

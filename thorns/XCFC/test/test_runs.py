@@ -28,6 +28,13 @@
                  and psi_c over 300 steps); an adaptive run (Loehner on rho, two levels, regrid
                  every 10) gives bit-identical analysis.tsv and xcfc.tsv on 1 and 2 ranks and after
                  a 1 -> 2 rank restart; a 2D spherical level ending in theta at the origin is reported
+  adaptive       XCFC::cadence_tolerance: the 1D migration to t = 70 (0.34 ms, through the fast expansion
+                 where a long cadence errs most): max |rho_c - rho_c(every step)| < 1 % of rho_c(0) with
+                 the adaptive cadence (tolerance 1e-4, quadratic, at most 15 steps), > 2 % with solves
+                 every 50 steps and updates every 5; its intervals are short (< 10 steps on average)
+                 during the expansion, while in the quiet BU0 star they grow to solve_every (50);
+                 xcfc.tsv has the interval and prediction-error columns; a 1 -> 2 rank restart of an
+                 adaptive run is bit-identical (the interval is checkpointed)
   curvilinear3d  the star on a 3D spherical grid (phi periodic): converged solves, bit-identical on 1
                  and 2 ranks, the initial metric equal to the 2D one (and on a 3D cylindrical grid); the same refined once inside
                  r = 10 (composite solves): converged, bit-identical on 1 and 2 ranks
@@ -53,7 +60,8 @@ def make_runner(a):
 
 
 XCFC_COLUMNS = ["iteration", "time", "reason", "X_cycles", "X_residual", "psi_cycles", "psi_residual", "alphapsi_cycles",
-                "alphapsi_residual", "beta_cycles", "beta_residual", "updates", "update_cycles", "wall_s"]
+                "alphapsi_residual", "beta_cycles", "beta_residual", "updates", "update_cycles", "interval", "psi_prediction",
+                "alpha_prediction", "beta_prediction", "update_prediction", "wall_s"]
 
 
 def rows(path, drop_last_column=False):
@@ -314,10 +322,61 @@ def mode_curvilinear3d(r):
         assert d < 5e-9, "the refined 3D initial metric differs from the refined 2D one (%s)" % col  # 2.4e-9 measured
     print("refined 3D spherical: solves converged, bit-identical on 1 and 2 ranks")
 
+def mode_adaptive(r):
+    parfile = os.path.abspath(os.path.join(r.a.source_dir, "parfiles", "migration.yaml"))
+    mig = remnant_runs.Runner(r.a, parfile, ["Flesh::timers=false", "Flesh::progress_every=0", "Analysis::every=2"])
+    n = ["Grid::dimension=1", "Grid::boundary_upper=[outflow,outflow,outflow]", "MoL::final_time=70"]
+    adaptive = ["XCFC::solve_every=15", "XCFC::cadence_tolerance=1e-4", "XCFC::extrapolation=quadratic"]
+    ref, _ = mig.run("mig_every1", 1, n + ["XCFC::solve_every=1"])
+    fixed, _ = mig.run("mig_50_5", 1, n + ["XCFC::solve_every=50", "XCFC::update_every=5"])
+    adapt, _ = mig.run("mig_adaptive", 1, n + adaptive)
+    R = columns(os.path.join(ref, "analysis.tsv"))
+
+    def error(out):  # the runs' steps differ (dt follows the metric): compare at the same times
+        c = columns(os.path.join(out, "analysis.tsv"))
+        return np.max(np.abs(c["rho_c"] - np.interp(c["time"], R["time"], R["rho_c"]))) / R["rho_c"][0]
+
+    ef, ea = error(fixed), error(adapt)
+    with open(os.path.join(adapt, "xcfc.tsv")) as f:
+        names = f.readline()[1:].split()
+    for col in ("interval", "psi_prediction", "alpha_prediction", "beta_prediction", "update_prediction"):
+        assert col in names, "xcfc.tsv lacks the column " + col
+    solves = [dict(zip(names, l.split("\t"))) for l in rows(os.path.join(adapt, "xcfc.tsv"))]
+    fast = [int(x["interval"]) for x in solves if 40 < float(x["time"]) <= 70]
+    steps = len(rows(os.path.join(ref, "analysis.tsv")))
+    print("1D migration to t = 70: max |d rho_c| / rho_c(0) from solving every step: solve_every 50 with updates every 5"
+          " %.4f, adaptive %.4f (%d solves; mean interval %.1f steps at t = 40-70)"
+          % (ef, ea, len(solves) - 1, np.mean(fast)))
+    assert ea < 0.01, "the adaptive cadence misses the 1 % bound on the migration's rho_c"
+    assert ef > 0.02, "solving every 50 steps with updates should miss it (4 %% measured): %.4f" % ef
+    assert np.mean(fast) < 10, "the adaptive cadence should solve often during the expansion: %s" % fast
+    assert all(float(x["psi_prediction"]) > 0 for x in solves[2:]), "no prediction error logged"
+    # The quiet BU0 star: the intervals grow to solve_every (updates keep its oscillation).
+    quiet = ["XCFC::solve_every=50", "XCFC::cadence_tolerance=1e-4", "XCFC::update_every=5"]
+    bu0, _ = r.run("bu0_adaptive", 1, quiet + ["MoL::max_iterations=300"])
+    intervals = [int(dict(zip(names, l.split("\t")))["interval"]) for l in rows(os.path.join(bu0, "xcfc.tsv"))][1:]
+    print("BU0, adaptive: intervals %s" % intervals)
+    assert intervals[:3] == [1, 2, 4] and intervals[-3:] == [50, 50, 50], "intervals: %s" % intervals
+    # A restart continues the adaptive intervals bit-identically (the interval is checkpointed): they
+    # grow 1, 2, 4, 6, 6 (solves after steps 1, 3, 7, 13, 19, ...), so the checkpoint at 15 lies inside one.
+    tight = ["XCFC::solve_every=6", "XCFC::cadence_tolerance=1e-4"]
+    straight, _ = r.run("adaptive_straight", 1, tight + ["MoL::max_iterations=30"])
+    first, _ = r.run("adaptive_restarted", 1, tight + ["MoL::max_iterations=17", "IO::checkpoint_every=15"])
+    _, p = r.run("adaptive_restarted", 2, tight + ["MoL::max_iterations=30", "IO::recover=auto"])
+    assert "recovered from" in p.stdout, p.stdout[-3000:]
+    assert rows(os.path.join(straight, "analysis.tsv")) == rows(os.path.join(first, "analysis.tsv")), "analysis.tsv differs after a restart"
+    a, b = rows(os.path.join(straight, "xcfc.tsv"), True), rows(os.path.join(first, "xcfc.tsv"), True)
+    assert a == b, "xcfc.tsv differs after a restart:\n%s\n%s" % (a, b)
+    assert [l.split("\t")[13] for l in a] == ["0", "1", "2", "4", "6", "6", "6"], a
+    print("adaptive cadence: a 1 -> 2 rank restart at 15 is bit-identical (analysis.tsv, xcfc.tsv; intervals %s)"
+          % [l.split("\t")[13] for l in a])
+
+
 def main():
     remnant_runs.main(make_runner, {"restart": mode_restart, "extrapolation": mode_extrapolation,
                                     "trigger": mode_trigger, "update": mode_update, "mass": mode_mass, "amr": mode_amr,
-                                    "migration": mode_migration, "curvilinear3d": mode_curvilinear3d})
+                                    "migration": mode_migration, "curvilinear3d": mode_curvilinear3d,
+                                    "adaptive": mode_adaptive})
 
 
 if __name__ == "__main__":
