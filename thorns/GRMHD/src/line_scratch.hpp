@@ -2,6 +2,7 @@
 // Contiguous line buffers of one direction sweep (cells with ghosts, face states, metric, fluxes),
 // shared by the hydro and the MHD sweeps: the gather of a line (gather_line) and the metric at its
 // faces (set_face_metric), both stored as one array per quantity so that the face loops vectorise.
+#include <span>
 #include <vector>
 
 #include "GRMHD/face_thermo.hpp"
@@ -39,10 +40,12 @@ struct LineScratch {
   double* right[NumRec];
   double* met[Metric::ncomp];  // cell metric along the line
   double* flux[NumFlux];       // face fluxes (weighted)
-  double* ppm;                 // reconstruction scratch
+  double* ppm;                 // reconstruction scratch (ppm_scratch())
   FaceMetricLine face;         // face metric
   double* work[kNumWork];      // faces 0..n
   int ng = 0;
+  // The whole reconstruction scratch (at least ppm_scratch_size(n) after ensure(n, ...)).
+  std::span<double> ppm_scratch() const { return {ppm, static_cast<std::size_t>(cap - 1)}; }
   void ensure(int n, int ngh) {
     const int len = n + 2 * ngh + 4;
     if (len <= cap && ngh == ng) return;
