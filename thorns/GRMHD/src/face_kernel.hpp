@@ -91,9 +91,10 @@ template <int N>
   }
 }
 
+// The face loop; flatten: every pointwise function inlined whatever the inliner's budget (a call
+// left in the loop stops its vectorisation).
 template <int D, class E, int NumRec, int NumFlux>
-inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>& L) {
-  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
+[[gnu::flatten]] inline void hydro_face_loop(const E& eos, int n, LineScratch<NumRec, NumFlux>& L) {
 #pragma GCC ivdep
   for (int f = 0; f <= n; ++f) {
     const PointMetric m = face_point_metric<D>(L.face, f);
@@ -111,6 +112,12 @@ inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>&
 #pragma GCC unroll 9
     for (int c = 0; c < kNumCons; ++c) L.flux[c][f] = fh[c] * psi6;
   }
+}
+
+template <int D, class E, int NumRec, int NumFlux>
+inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>& L) {
+  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
+  hydro_face_loop<D>(eos, n, L);
 }
 
 }  // namespace remnant::grmhd

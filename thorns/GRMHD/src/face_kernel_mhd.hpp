@@ -19,11 +19,11 @@ using MhdLineScratch = LineScratch<kNumRecMhd, kNumFluxMhd>;
 // the face and the inverse scale factors of the transverse components (1 in Cartesian coordinates).
 enum MhdFaceWork : int { kWorkBNormal = 8, kWorkInvNext = 9, kWorkInvPrev = 10 };
 
-// flux_weight: the momentum-flux factors of the line (mhd_fluxes.cpp's momentum_flux_weights).
+// flatten: as hydro_face_loop.
 template <int D, class E>
-inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& flux_weight, MhdLineScratch& L) {
+[[gnu::flatten]] inline void mhd_face_loop(const E& eos, int n, const std::array<double, 3>& flux_weight,
+                                           MhdLineScratch& L) {
   constexpr int next = (D + 1) % 3, prev = (D + 2) % 3;
-  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
   const double w0 = flux_weight[0], w1 = flux_weight[1], w2 = flux_weight[2];
 #pragma GCC ivdep
   for (int f = 0; f <= n; ++f) {
@@ -65,6 +65,13 @@ inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& fl
     L.flux[kNumCons + kFluxNext][f] = fh[kB1 + next] * psi6;
     L.flux[kNumCons + kFluxPrev][f] = fh[kB1 + prev] * psi6;
   }
+}
+
+// flux_weight: the momentum-flux factors of the line (mhd_fluxes.cpp's momentum_flux_weights).
+template <int D, class E>
+inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& flux_weight, MhdLineScratch& L) {
+  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
+  mhd_face_loop<D>(eos, n, flux_weight, L);
 }
 
 }  // namespace remnant::grmhd

@@ -3,6 +3,7 @@
 // shared by the hydro and the MHD sweeps: the gather of a line (gather_line) and the metric at its
 // faces (set_face_metric), both stored as one array per quantity so that the face loops vectorise.
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "GRMHD/face_thermo.hpp"
@@ -173,7 +174,9 @@ inline void set_face_metric(const Block& b, const PolarTrig& trig, MetricFaceInt
   const double* mpsi = L.met[Metric::idx::psi];
   const double* malpha = L.met[Metric::idx::alpha];
   const double* mbeta[3] = {L.met[Metric::idx::beta], L.met[Metric::idx::beta2], L.met[Metric::idx::beta3]};
-  const auto fill = [&](auto face) {
+  const bool cartesian = b.coordinates == CoordinateSystem::cartesian;
+  // Cartesian: gamma^dd = 1 / psi^4 in the same loop.
+  const auto fill = [&](auto face, auto is_cartesian) {
     for (int f = 0; f <= n; ++f) {
       const double psi = face(mpsi, f);
       const double p2 = psi * psi;
@@ -182,16 +185,19 @@ inline void set_face_metric(const Block& b, const PolarTrig& trig, MetricFaceInt
       fm.alpha[f] = face(malpha, f);
       for (int c = 0; c < 3; ++c) fm.beta[c][f] = face(mbeta[c], f);
       for (int c = 0; c < 3; ++c) fm.g_dn[c][f] = psi4;
+      if constexpr (is_cartesian) fm.g_up_d[f] = 1.0 / psi4;
     }
   };
-  if (interp == MetricFaceInterpolation::cubic)
-    fill([](const double* a, int f) { return (9.0 * (a[f - 1] + a[f]) - (a[f - 2] + a[f + 1])) * (1.0 / 16.0); });
-  else
-    fill([](const double* a, int f) { return 0.5 * (a[f - 1] + a[f]); });
-  if (b.coordinates == CoordinateSystem::cartesian) {
-    for (int f = 0; f <= n; ++f) fm.g_up_d[f] = 1.0 / fm.g_dn[d][f];
-    return;
+  const auto cubic = [](const double* a, int f) { return (9.0 * (a[f - 1] + a[f]) - (a[f - 2] + a[f + 1])) * (1.0 / 16.0); };
+  const auto linear = [](const double* a, int f) { return 0.5 * (a[f - 1] + a[f]); };
+  if (interp == MetricFaceInterpolation::cubic) {
+    if (cartesian) fill(cubic, std::true_type{});
+    else fill(cubic, std::false_type{});
+  } else {
+    if (cartesian) fill(linear, std::true_type{});
+    else fill(linear, std::false_type{});
   }
+  if (cartesian) return;
   Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
   for (int f = 0; f <= n; ++f) {
     x[d] = b.face_coordinate(d, f);

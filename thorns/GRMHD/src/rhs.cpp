@@ -5,7 +5,9 @@
 #include "rhs.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "GRMHD/face_thermo.hpp"
@@ -91,9 +93,17 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
   // The shift terms cost a Christoffel evaluation: only where beta is not zero in this block.
   bool shift = false;
   {
+    // In chunks, OR-ing the bits without the sign (p != 0.0, -0.0 included), which vectorises; the
+    // whole array is read when beta = 0.
     const std::size_t np = b.points_per_component(g.metric);
     const double* p = b.data(g.metric) + static_cast<std::size_t>(Metric::idx::beta) * np;
-    for (std::size_t i = 0; i < 3 * np && !shift; ++i) shift = p[i] != 0.0;
+    constexpr std::size_t chunk = 256;
+    for (std::size_t i0 = 0; i0 < 3 * np && !shift; i0 += chunk) {
+      const std::size_t end = std::min(i0 + chunk, 3 * np);
+      std::uint64_t bits = 0;
+      for (std::size_t i = i0; i < end; ++i) bits |= std::bit_cast<std::uint64_t>(p[i]) << 1;
+      shift = bits != 0;
+    }
   }
   const double* ff[3] = {b.face_factors(0), b.face_factors(1), b.face_factors(2)};
   const double* vw[3] = {b.volume_weights(0), b.volume_weights(1), b.volume_weights(2)};
