@@ -29,6 +29,8 @@ struct FaceMetricLine {
   double* g_up_d;    // gamma^dd of the sweep direction d
 };
 inline constexpr int kFaceMetricArrays = 9;
+// The stride of a line along x, known at compile time.
+using UnitStride = std::integral_constant<std::ptrdiff_t, 1>;
 // Per-face work arrays of a face kernel (the thermodynamics of both sides, ...).
 inline constexpr int kNumWork = 12;
 
@@ -39,7 +41,6 @@ struct LineScratch {
   double* cell[NumRec];        // cell values, offset so that [0] is the first interior cell
   double* left[NumRec];        // faces 0..n
   double* right[NumRec];
-  double* met[Metric::ncomp];  // cell metric along the line
   double* flux[NumFlux];       // face fluxes (weighted)
   double* ppm;                 // reconstruction scratch (ppm_scratch())
   FaceMetricLine face;         // face metric
@@ -52,7 +53,7 @@ struct LineScratch {
     if (len <= cap && ngh == ng) return;
     cap = len;
     ng = ngh;
-    const int arrays = NumRec * 3 + Metric::ncomp + NumFlux + 1 + kFaceMetricArrays + kNumWork;
+    const int arrays = NumRec * 3 + NumFlux + 1 + kFaceMetricArrays + kNumWork;
     storage.assign(static_cast<std::size_t>(arrays) * static_cast<std::size_t>(len), 0.0);
     double* p = storage.data();
     auto take = [&](int offset) {
@@ -63,7 +64,6 @@ struct LineScratch {
     for (double*& a : cell) a = take(ngh + 1);
     for (double*& a : left) a = take(1);
     for (double*& a : right) a = take(1);
-    for (double*& a : met) a = take(ngh + 1);
     for (double*& a : flux) a = take(1);
     ppm = take(1);
     face.psi6 = take(1);
@@ -128,7 +128,7 @@ struct LineSources {
 };
 
 // Copies the line at offset `base` (stride `stride`, n cells and ng ghosts each side) into L:
-// rho, W v^1..3, thermal, Ye into cell[0..5], the metric into met; the NumRec - 6 fields of `extra`
+// rho, W v^1..3, thermal, Ye into cell[0..5] (set_face_metric reads the metric in place); the NumRec - 6 fields of `extra`
 // (the MHD sweep's transverse B; nullptr for the hydro sweep) into cell[6..], read at the same points.
 template <int NumRec, int NumFlux>
 inline void gather_line(const LineSources& src, const double* const* extra, std::ptrdiff_t base, std::ptrdiff_t stride,
@@ -157,23 +157,21 @@ inline void gather_line(const LineSources& src, const double* const* extra, std:
     double* out = L.cell[kNumRecHydro + e];
     for (int m = -ng; m < n + ng; ++m) out[m] = px[m * stride];
   }
-  for (int c = 0; c < Metric::ncomp; ++c) {
-    const double* pm = src.met[c] + base;
-    double* out = L.met[c];
-    for (int m = -ng; m < n + ng; ++m) out[m] = pm[m * stride];
-  }
 }
 
 // The face metric of the line in direction d whose cells have the transverse indices of `idx`:
-// psi, alpha, beta interpolated to the faces (linear or cubic), psi^6, gamma_ii = psi^4 f_ii and
-// gamma^dd, with the bits of point_metric / point_metric_cartesian (valencia.hpp).
-template <int NumRec, int NumFlux>
+// psi, alpha, beta interpolated to the faces (linear or cubic) straight from the metric fields
+// (offset `base`, stride `stride`; a std::integral_constant along x), psi^6, gamma_ii = psi^4 f_ii
+// and gamma^dd, with the bits of point_metric / point_metric_cartesian (valencia.hpp).
+template <int NumRec, int NumFlux, class Stride>
 inline void set_face_metric(const Block& b, const PolarTrig& trig, MetricFaceInterpolation interp, int d,
-                            const int* idx, int n, LineScratch<NumRec, NumFlux>& L) {
+                            const int* idx, int n, const LineSources& src, std::ptrdiff_t base, Stride stride,
+                            LineScratch<NumRec, NumFlux>& L) {
   const FaceMetricLine& fm = L.face;
-  const double* mpsi = L.met[Metric::idx::psi];
-  const double* malpha = L.met[Metric::idx::alpha];
-  const double* mbeta[3] = {L.met[Metric::idx::beta], L.met[Metric::idx::beta2], L.met[Metric::idx::beta3]};
+  const double* mpsi = src.met[Metric::idx::psi] + base;
+  const double* malpha = src.met[Metric::idx::alpha] + base;
+  const double* mbeta[3] = {src.met[Metric::idx::beta] + base, src.met[Metric::idx::beta2] + base,
+                            src.met[Metric::idx::beta3] + base};
   const bool cartesian = b.coordinates == CoordinateSystem::cartesian;
   // Cartesian: gamma^dd = 1 / psi^4 in the same loop.
   const auto fill = [&](auto face, auto is_cartesian) {
@@ -188,8 +186,14 @@ inline void set_face_metric(const Block& b, const PolarTrig& trig, MetricFaceInt
       if constexpr (is_cartesian) fm.g_up_d[f] = 1.0 / psi4;
     }
   };
-  const auto cubic = [](const double* a, int f) { return (9.0 * (a[f - 1] + a[f]) - (a[f - 2] + a[f + 1])) * (1.0 / 16.0); };
-  const auto linear = [](const double* a, int f) { return 0.5 * (a[f - 1] + a[f]); };
+  const auto cubic = [stride](const double* a, int f) {
+    const std::ptrdiff_t s = stride;
+    return (9.0 * (a[(f - 1) * s] + a[f * s]) - (a[(f - 2) * s] + a[(f + 1) * s])) * (1.0 / 16.0);
+  };
+  const auto linear = [stride](const double* a, int f) {
+    const std::ptrdiff_t s = stride;
+    return 0.5 * (a[(f - 1) * s] + a[f * s]);
+  };
   if (interp == MetricFaceInterpolation::cubic) {
     if (cartesian) fill(cubic, std::true_type{});
     else fill(cubic, std::false_type{});

@@ -111,7 +111,8 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
         }
       }
       for (int q = 0; q < kNumRecMhd; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
-      set_face_metric(b, trig, s.metric_faces, D, idx, n, L);
+      if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
+      else set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, stride, L);
 
       Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
       // The face field is the sqrt(f)-weighted face mean of B^d; the face states need the point value

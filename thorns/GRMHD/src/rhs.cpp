@@ -50,7 +50,8 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
       const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
       gather_line(src, nullptr, base, stride, n, ng, L);
       for (int q = 0; q < kNumRecHydro; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
-      set_face_metric(b, trig, s.metric_faces, D, idx, n, L);
+      if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
+      else set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, stride, L);
       faces_to(L, out, fbase, fstride, n, [&] { hydro_face_fluxes<D>(eos, n, L); });
     }
 }
