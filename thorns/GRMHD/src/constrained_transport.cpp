@@ -127,6 +127,8 @@ void uct_hll_row_cartesian(const Strided* cta, const Strided* ctb, const Strided
   const double* __restrict fa = a == 0 ? ffa : ffa + id[a];
   const double* __restrict fb = bb == 0 ? ffb : ffb + id[bb];
   const double* __restrict fc = C == 0 ? vwc : vwc + id[C];
+  // ivdep: out (an EMF group) is only written, the face data only read.
+#pragma GCC ivdep
   for (int i = 0; i < len; ++i) {
     const double emf = -upwind_part_select(ra, i, sb, qb, sqb) + upwind_part_select(rb, i, sa, qa, sqa);
     out[i] = emf * fa[a == 0 ? i : 0] * fb[bb == 0 ? i : 0] * fc[C == 0 ? i : 0] / len_c;

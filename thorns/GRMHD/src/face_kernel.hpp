@@ -1,7 +1,7 @@
 #pragma once
 // The hydro face loop of a line sweep in direction D (a template parameter): from the reconstructed
 // states (L.left / L.right) and the face metric (L.face) to the HLL flux densities psi^6 F in
-// L.flux: the pointwise functions of valencia.hpp and face_thermo.hpp, inlined (so the same bits),
+// L.flux or a FaceOutput: the pointwise functions of valencia.hpp and face_thermo.hpp, inlined (so the same bits),
 // over arrays of faces, with HLL's degenerate-width branch as a select, so that the compiler
 // vectorises the loop. Tabulated EOS: the table calls come first, in a
 // loop of their own (face_thermo_line).
@@ -93,8 +93,8 @@ template <int N>
 
 // The face loop; flatten: every pointwise function inlined whatever the inliner's budget (a call
 // left in the loop stops its vectorisation).
-template <int D, class E, int NumRec, int NumFlux>
-[[gnu::flatten]] inline void hydro_face_loop(const E& eos, int n, LineScratch<NumRec, NumFlux>& L) {
+template <int D, class E, int NumRec, int NumFlux, class Out>
+[[gnu::flatten]] inline void hydro_face_loop(const E& eos, int n, const LineScratch<NumRec, NumFlux>& L, const Out& out) {
 #pragma GCC ivdep
   for (int f = 0; f <= n; ++f) {
     const PointMetric m = face_point_metric<D>(L.face, f);
@@ -110,14 +110,19 @@ template <int D, class E, int NumRec, int NumFlux>
     hll_select<kNumCons>(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
     const double psi6 = L.face.psi6[f];
 #pragma GCC unroll 9
-    for (int c = 0; c < kNumCons; ++c) L.flux[c][f] = fh[c] * psi6;
+    for (int c = 0; c < kNumCons; ++c) out(c, f) = fh[c] * psi6;
   }
 }
 
+// Into `out` (a FaceOutput), or into L.flux.
+template <int D, class E, int NumRec, int NumFlux, class Out>
+inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>& L, const Out& out) {
+  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
+  hydro_face_loop<D>(eos, n, L, out);
+}
 template <int D, class E, int NumRec, int NumFlux>
 inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>& L) {
-  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
-  hydro_face_loop<D>(eos, n, L);
+  hydro_face_fluxes<D>(eos, n, L, face_output(L));
 }
 
 }  // namespace remnant::grmhd

@@ -2,8 +2,9 @@
 // The MHD face loop of a line sweep in direction D: face_kernel.hpp's hydro loop (the same side
 // states) with the pointwise magnetic functions of valencia_mhd.hpp (magnetic_state, conserved_mhd,
 // flux_mhd, characteristic_speeds_mhd) inlined and the nine-component HLL as a select. Outputs: the
-// hydro fluxes psi^6 F (momentum fluxes times the line's flux weights) in L.flux[0..5] and the
-// Riemann data of the edge EMFs (mhd_groups.hpp's CtComponent order) in L.flux[6..11].
+// hydro fluxes psi^6 F (momentum fluxes times the line's flux weights) in outputs 0..5 and the
+// Riemann data of the edge EMFs (mhd_groups.hpp's CtComponent order) in outputs 6..11 (of L.flux
+// or a FaceOutput).
 #include "GRMHD/valencia_mhd.hpp"
 #include "face_kernel.hpp"
 #include "mhd_groups.hpp"
@@ -20,9 +21,9 @@ using MhdLineScratch = LineScratch<kNumRecMhd, kNumFluxMhd>;
 enum MhdFaceWork : int { kWorkBNormal = 8, kWorkInvNext = 9, kWorkInvPrev = 10 };
 
 // flatten: as hydro_face_loop.
-template <int D, class E>
+template <int D, class E, class Out>
 [[gnu::flatten]] inline void mhd_face_loop(const E& eos, int n, const std::array<double, 3>& flux_weight,
-                                           MhdLineScratch& L) {
+                                           const MhdLineScratch& L, const Out& out) {
   constexpr int next = (D + 1) % 3, prev = (D + 2) % 3;
   const double w0 = flux_weight[0], w1 = flux_weight[1], w2 = flux_weight[2];
 #pragma GCC ivdep
@@ -52,26 +53,32 @@ template <int D, class E>
     fh[kS2] *= w1;
     fh[kS3] *= w2;
 #pragma GCC unroll 9
-    for (int c = 0; c < kNumCons; ++c) L.flux[c][f] = fh[c] * psi6;
+    for (int c = 0; c < kNumCons; ++c) out(c, f) = fh[c] * psi6;
     double ap = 0.0, am = 0.0;  // std::max({0.0, lpl, lpr}), std::min({0.0, lml, lmr})
     ap = ap < lpl ? lpl : ap;
     ap = ap < lpr ? lpr : ap;
     am = lml < am ? lml : am;
     am = lmr < am ? lmr : am;
-    L.flux[kNumCons + kAlphaPlus][f] = ap;
-    L.flux[kNumCons + kAlphaMinus][f] = -am;
-    L.flux[kNumCons + kVtLeft][f] = m.alpha * sl.v[D] - m.beta[D];
-    L.flux[kNumCons + kVtRight][f] = m.alpha * sr.v[D] - m.beta[D];
-    L.flux[kNumCons + kFluxNext][f] = fh[kB1 + next] * psi6;
-    L.flux[kNumCons + kFluxPrev][f] = fh[kB1 + prev] * psi6;
+    out(kNumCons + kAlphaPlus, f) = ap;
+    out(kNumCons + kAlphaMinus, f) = -am;
+    out(kNumCons + kVtLeft, f) = m.alpha * sl.v[D] - m.beta[D];
+    out(kNumCons + kVtRight, f) = m.alpha * sr.v[D] - m.beta[D];
+    out(kNumCons + kFluxNext, f) = fh[kB1 + next] * psi6;
+    out(kNumCons + kFluxPrev, f) = fh[kB1 + prev] * psi6;
   }
 }
 
 // flux_weight: the momentum-flux factors of the line (mhd_fluxes.cpp's momentum_flux_weights).
+// Into `out` (a FaceOutput), or into L.flux.
+template <int D, class E, class Out>
+inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& flux_weight, MhdLineScratch& L,
+                            const Out& out) {
+  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
+  mhd_face_loop<D>(eos, n, flux_weight, L, out);
+}
 template <int D, class E>
 inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& flux_weight, MhdLineScratch& L) {
-  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
-  mhd_face_loop<D>(eos, n, flux_weight, L);
+  mhd_face_fluxes<D>(eos, n, flux_weight, L, face_output(L));
 }
 
 }  // namespace remnant::grmhd

@@ -75,27 +75,23 @@ struct LineScratch {
   }
 };
 
-// Runs the face kernel `faces` (writing L.flux[c][0..n]) and stores L.flux[c] into out[c] + base at
-// stride `stride`; along x (stride 1) the kernel writes into out directly.
-template <int NumRec, int NumFlux, class Faces>
-inline void faces_to(LineScratch<NumRec, NumFlux>& L, double* const* out, std::ptrdiff_t base, std::ptrdiff_t stride, int n,
-                     Faces&& faces) {
-  if (stride == 1) {
-    double* own[NumFlux];
-    for (int c = 0; c < NumFlux; ++c) {
-      own[c] = L.flux[c];
-      L.flux[c] = out[c] + base;
-    }
-    faces();
-    for (int c = 0; c < NumFlux; ++c) L.flux[c] = own[c];
-    return;
-  }
-  faces();
-  for (int c = 0; c < NumFlux; ++c) {
-    const double* F = L.flux[c];
-    double* fo = out[c] + base;
-    for (int f = 0; f <= n; ++f) fo[f * stride] = F[f];
-  }
+// Where a face kernel writes its outputs: component c of face f at p[c][f * stride] (the flux
+// groups themselves, strided across x; UnitStride along x or into LineScratch::flux).
+template <int NumFlux, class Stride>
+struct FaceOutput {
+  double* p[NumFlux];
+  Stride stride;
+  double& operator()(int c, int f) const { return p[c][f * static_cast<std::ptrdiff_t>(stride)]; }
+};
+template <int NumFlux, class Stride>
+inline FaceOutput<NumFlux, Stride> face_output(double* const* out, std::ptrdiff_t base, Stride stride) {
+  FaceOutput<NumFlux, Stride> o{{}, stride};
+  for (int c = 0; c < NumFlux; ++c) o.p[c] = out[c] + base;
+  return o;
+}
+template <int NumRec, int NumFlux>
+inline FaceOutput<NumFlux, UnitStride> face_output(const LineScratch<NumRec, NumFlux>& L) {
+  return face_output<NumFlux>(L.flux, 0, UnitStride{});
 }
 
 inline double face_value(MetricFaceInterpolation m, const double* a, int f) {

@@ -137,7 +137,9 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.work[kWorkInvNext][f] = h[next] != 0 ? 1.0 / h[next] : 0.0;
           L.work[kWorkInvPrev][f] = h[prev] != 0 ? 1.0 / h[prev] : 0.0;
         }
-      faces_to(L, out, fbase, fstride, n, [&] { mhd_face_fluxes<D>(eos, n, flux_weight, L); });
+      // Straight into the flux and ct groups (strided across x).
+      if constexpr (D == 0) mhd_face_fluxes<D>(eos, n, flux_weight, L, face_output<kNumFluxMhd>(out, fbase, UnitStride{}));
+      else mhd_face_fluxes<D>(eos, n, flux_weight, L, face_output<kNumFluxMhd>(out, fbase, fstride));
     }
 }
 
