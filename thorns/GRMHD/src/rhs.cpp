@@ -145,7 +145,7 @@ template <bool Mhd, bool Shift>
 // Pass 2 over the cells of a block, i fastest. Mhd: the magnetised sources with the cell-centred
 // field of group `bvec` (B^i, not densitised); the hydro instantiation never touches it.
 template <bool Mhd>
-void divergence_and_sources(const Groups& g, Block& b, int bvec) {
+void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_rows = true) {
   Field prim[Prim::ncomp], met[Metric::ncomp], rhs[kNumCons], flux[3][kNumCons], bf[3];
   if constexpr (Mhd)
     for (int c = 0; c < 3; ++c) bf[c] = b.field(bvec, c);
@@ -180,7 +180,7 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
       shift = bits != 0;
     }
   }
-  const bool cartesian_3d = cartesian && used[0] && used[1] && used[2];
+  const bool cartesian_3d = cartesian_rows && cartesian && used[0] && used[1] && used[2];
   const double* ff[3] = {b.face_factors(0), b.face_factors(1), b.face_factors(2)};
   const double* vw[3] = {b.volume_weights(0), b.volume_weights(1), b.volume_weights(2)};
   std::array<std::array<double, 3>, 3> df{};
@@ -317,5 +317,11 @@ void compute_block_fluxes(const eos::EOS& eos, const RhsSettings& s, const Group
 void compute_block_rhs(const Groups& g, Block& b) { divergence_and_sources<false>(g, b, -1); }
 
 void compute_block_rhs_mhd(const Groups& g, int bvec, Block& b) { divergence_and_sources<true>(g, b, bvec); }
+
+void compute_block_rhs_per_cell(const Groups& g, Block& b) { divergence_and_sources<false>(g, b, -1, false); }
+
+void compute_block_rhs_mhd_per_cell(const Groups& g, int bvec, Block& b) {
+  divergence_and_sources<true>(g, b, bvec, false);
+}
 
 }  // namespace remnant::grmhd

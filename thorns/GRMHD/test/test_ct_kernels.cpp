@@ -8,17 +8,11 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
-#include <fstream>
-#include <memory>
 #include <random>
-#include <sstream>
-#include <string>
 
 #include "GRMHD/reconstruction.hpp"
 #include "constrained_transport.hpp"
-#include "mhd_groups.hpp"
-#include "remnant/grid.hpp"
-#include "remnant/thorn_spec.hpp"
+#include "kernel_block.hpp"
 
 namespace {
 
@@ -26,35 +20,6 @@ using namespace remnant;
 using namespace remnant::grmhd;
 
 bool same_bits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
-
-// The groups of HydroBase, Spacetime and GRMHD as their thorn.yaml declare them.
-VariableRegistry registry() {
-  VariableRegistry vars;
-  for (const char* thorn : {"HydroBase", "Spacetime", "GRMHD"}) {
-    const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/" + thorn + "/thorn.yaml";
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    for (VariableGroupSpec spec : parse_thorn_spec(text.str(), path).variables) {
-      spec.thorn = thorn;
-      vars.add(spec);
-    }
-  }
-  return vars;
-}
-
-MhdGroups groups(const VariableRegistry& vars) {
-  MhdGroups g;
-  for (int d = 0; d < 3; ++d) {
-    const std::string k = std::to_string(d + 1), xyz(1, static_cast<char>('x' + d));
-    g.bface[d] = vars.find("HydroBase::Bface" + k);
-    g.bface_rhs[d] = vars.find("HydroBase::Bface" + k + "_rhs");
-    g.ct[d] = vars.find("GRMHD::ct_" + xyz);
-    g.emf[d] = vars.find("GRMHD::emf_" + xyz);
-  }
-  g.bvec = vars.find("HydroBase::Bvec");
-  return g;
-}
 
 double hll_product_reference(double ap, double am, double vl, double vh, double bl, double bh) {
   const double w = ap + am;
@@ -83,10 +48,11 @@ double upwind_reference(Block& blk, int ct_group, int bface_group, int a, int b,
 }
 
 TEST(CtKernels, CartesianUctHllAndFaceRhsHaveTheBitsOfThePointwiseFormulas) {
-  const VariableRegistry vars = registry();
-  const MhdGroups g = groups(vars);
+  const VariableRegistry vars = test::kernel_registry();
+  const MhdGroups g = test::mhd_groups(vars);
   constexpr int n = 6;
-  Block blk(0, 0, {0, 0, 0}, {n, n, n}, {3, 3, 3}, {0.0, 0.0, 0.0}, {0.3, 0.25, 0.2}, vars);
+  const std::unique_ptr<Block> block = test::kernel_block(vars, n);
+  Block& blk = *block;
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   int zero_width = 0;
