@@ -74,6 +74,67 @@ inline void face_values_along(const Block& blk, const Strided& bf, int a, int b,
   }
 }
 
+// The Cartesian uct_hll EMFs of a row of edges along x (id: the row's first edge), the operations
+// of upwind_part and hll_product in the same order with their branches as selects, so that the
+// row vectorises: mc_slope's zero for dm dp <= 0, std::max / std::min({...}) as the first extreme
+// value, hll_product's mean for a zero width.
+[[gnu::always_inline]] inline double mc_slope_select(double dm, double dp) {
+  const double s = dm > 0 ? 1.0 : -1.0;
+  double m = 2.0 * std::abs(dm);
+  const double b = 2.0 * std::abs(dp), c = 0.5 * std::abs(dm + dp);
+  m = b < m ? b : m;
+  m = c < m ? c : m;
+  return dm * dp <= 0 ? 0.0 : s * m;
+}
+// upwind_part's faces: the four ct components of the faces of one direction along a row.
+struct CtRow {
+  const double* __restrict alpha_plus;
+  const double* __restrict alpha_minus;
+  const double* __restrict vt_left;
+  const double* __restrict vt_right;
+  CtRow(const Strided* ct, std::ptrdiff_t o)
+      : alpha_plus(ct[kAlphaPlus].f.origin + o), alpha_minus(ct[kAlphaMinus].f.origin + o),
+        vt_left(ct[kVtLeft].f.origin + o), vt_right(ct[kVtRight].f.origin + o) {}
+};
+[[gnu::always_inline]] inline double upwind_part_select(const CtRow& ct, std::ptrdiff_t oa, std::ptrdiff_t sb,
+                                                        const double* __restrict q, std::ptrdiff_t sq) {
+  const std::ptrdiff_t lo = oa - sb;
+  const double apl = ct.alpha_plus[lo], aph = ct.alpha_plus[oa], aml = ct.alpha_minus[lo], amh = ct.alpha_minus[oa];
+  const double ap = apl < aph ? aph : apl;  // std::max(apl, aph)
+  const double am = aml < amh ? amh : aml;
+  const double vl = 0.5 * (ct.vt_left[lo] + ct.vt_left[oa]);
+  const double vh = 0.5 * (ct.vt_right[lo] + ct.vt_right[oa]);
+  const double qm2 = q[oa - 2 * sq], qm1 = q[oa - sq], q0 = q[oa], qp1 = q[oa + sq];
+  const double bl = qm1 + 0.5 * mc_slope_select(qm1 - qm2, q0 - qm1);
+  const double bh = q0 - 0.5 * mc_slope_select(q0 - qm1, qp1 - q0);
+  const double w = ap + am;
+  const double hll = (ap * vl * bl + am * vh * bh - ap * am * (bh - bl)) / w;
+  const double mean = 0.5 * (vl * bl + vh * bh);
+  return !(w > 0) ? mean : hll;
+}
+
+template <int C>
+void uct_hll_row_cartesian(const Strided* cta, const Strided* ctb, const Strided& Ba, const Strided& Bb, const int* id,
+                           int len, const double* ffa, const double* ffb, const double* vwc, double len_c, const Strided& e) {
+  constexpr int a = (C + 1) % 3, bb = (C + 2) % 3;
+  const CtRow ra(cta, cta[0].at(id)), rb(ctb, ctb[0].at(id));
+  const std::ptrdiff_t sb = cta[0].stride(bb), sa = ctb[0].stride(a);
+  const double* __restrict qb = Bb.f.origin + Bb.at(id);  // B^bb along a
+  const double* __restrict qa = Ba.f.origin + Ba.at(id);  // B^a along bb
+  const std::ptrdiff_t sqb = Bb.stride(a), sqa = Ba.stride(bb);
+  double* __restrict out = e.f.origin + e.at(id);
+  // The factors that vary along x (direction 0) are read at i, the others at the row's index.
+  const double* __restrict fa = a == 0 ? ffa : ffa + id[a];
+  const double* __restrict fb = bb == 0 ? ffb : ffb + id[bb];
+  const double* __restrict fc = C == 0 ? vwc : vwc + id[C];
+  // ivdep: out (an EMF group) is only written, the face data only read.
+#pragma GCC ivdep
+  for (int i = 0; i < len; ++i) {
+    const double emf = -upwind_part_select(ra, i, sb, qb, sqb) + upwind_part_select(rb, i, sa, qa, sqa);
+    out[i] = emf * fa[a == 0 ? i : 0] * fb[bb == 0 ? i : 0] * fc[C == 0 ? i : 0] / len_c;
+  }
+}
+
 }  // namespace
 
 void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b) {
@@ -103,6 +164,15 @@ void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block&
     const int ext[3] = {used[0] && c != 0 ? b.n[0] + 1 : b.n[0], used[1] && c != 1 ? b.n[1] + 1 : b.n[1],
                         used[2] && c != 2 ? b.n[2] + 1 : b.n[2]};
     int id[3];
+    if (scheme == EmfScheme::uct_hll && !curvilinear && used[a] && used[bb]) {
+      for (id[2] = 0; id[2] < ext[2]; ++id[2])
+        for (id[1] = 0; id[1] < ext[1]; ++id[1]) {
+          id[0] = 0;
+          const auto row = c == 0 ? uct_hll_row_cartesian<0> : c == 1 ? uct_hll_row_cartesian<1> : uct_hll_row_cartesian<2>;
+          row(cta, ctb, Ba, Bb, id, ext[0], ffa, ffb, vwc, len_c, e);
+        }
+      continue;
+    }
     for (id[2] = 0; id[2] < ext[2]; ++id[2])
       for (id[1] = 0; id[1] < ext[1]; ++id[1])
         for (id[0] = 0; id[0] < ext[0]; ++id[0]) {
@@ -143,24 +213,29 @@ void face_rhs(const MhdGroups& g, Block& b) {
     const double len_c = used[c] ? b.dx[c] : 1.0, len_b = used[bb] ? b.dx[bb] : 1.0;
     const int ext[3] = {used[0] && a == 0 ? b.n[0] + 1 : b.n[0], used[1] && a == 1 ? b.n[1] + 1 : b.n[1],
                         used[2] && a == 2 ? b.n[2] + 1 : b.n[2]};
+    // Block::face_area(a, i, j, k) = 1 * g_0 * g_1 * g_2 (the face factor in direction a, the volume
+    // weights in the others), multiplied in that order.
+    const double* g_of[3];
+    for (int d = 0; d < 3; ++d) g_of[d] = d == a ? b.face_factors(d) : b.volume_weights(d);
+    const std::ptrdiff_t sec = ec.stride(bb), seb = eb.stride(c);
     int id[3];
     for (id[2] = 0; id[2] < ext[2]; ++id[2])
-      for (id[1] = 0; id[1] < ext[1]; ++id[1])
-        for (id[0] = 0; id[0] < ext[0]; ++id[0]) {
-          const double area = b.face_area(a, id[0], id[1], id[2]);
+      for (id[1] = 0; id[1] < ext[1]; ++id[1]) {
+        id[0] = 0;
+        const double g1 = g_of[1][id[1]], g2 = g_of[2][id[2]];
+        const double* pec = ec.f.origin + ec.at(id);
+        const double* peb = eb.f.origin + eb.at(id);
+        double* out = r.f.origin + r.at(id);
+        for (int i = 0; i < ext[0]; ++i) {
+          const double area = 1.0 * g_of[0][i] * g1 * g2;
           double circulation = 0;
           // d_t (A B^a) = -[(E_c(b+1) - E_c(b)) dx_c - (E_b(c+1) - E_b(c)) dx_b]; an unused transverse
           // direction has one edge on both sides: no contribution.
-          if (used[bb]) {
-            const std::ptrdiff_t o = ec.at(id);
-            circulation += (ec[o + ec.stride(bb)] - ec[o]) * len_c;
-          }
-          if (used[c]) {
-            const std::ptrdiff_t o = eb.at(id);
-            circulation -= (eb[o + eb.stride(c)] - eb[o]) * len_b;
-          }
-          r.f.origin[r.at(id)] = area > 0 ? -circulation / area : 0.0;
+          if (used[bb]) circulation += (pec[i + sec] - pec[i]) * len_c;
+          if (used[c]) circulation -= (peb[i + seb] - peb[i]) * len_b;
+          out[i] = area > 0 ? -circulation / area : 0.0;
         }
+      }
   }
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // The hydro face loop of a line sweep in direction D (a template parameter): from the reconstructed
 // states (L.left / L.right) and the face metric (L.face) to the HLL flux densities psi^6 F in
-// L.flux. The pointwise functions of valencia.hpp and face_thermo.hpp written out over arrays of
-// faces with the same operations in the same order (so the same bits), without branches or calls in
-// the main loop, which the compiler vectorises. Tabulated EOS: the table calls come first, in a
+// L.flux or a FaceOutput: the pointwise functions of valencia.hpp and face_thermo.hpp, inlined (so the same bits),
+// over arrays of faces, with HLL's degenerate-width branch as a select, so that the compiler
+// vectorises the loop. Tabulated EOS: the table calls come first, in a
 // loop of their own (face_thermo_line).
 #include "GRMHD/face_thermo.hpp"
 #include "GRMHD/valencia.hpp"
@@ -33,59 +33,41 @@ inline void face_thermo_line(const E& eos, int n, LineScratch<NumRec, NumFlux>& 
   }
 }
 
-// One side of a face: the state, its conserved vector u, flux f and speeds lm, lp (the bits of
-// set_velocity_from_wv, complete_face_thermo (ideal gas), conserved, flux, characteristic_speeds).
-struct SideState {
-  double W, v[3], v_dn[3], v2, press, h, cs2, ye;
-};
-
+// The face metric as the pointwise functions read it (alpha, beta, gamma_ii, gamma^DD; the other
+// gamma^ii are not read by the face kernels).
 template <int D>
-[[gnu::always_inline]] inline void side_flux(const SideState& s, double rho, double alpha, double beta_d, double g_up_d, double* u, double* fl,
-                      double& lm, double& lp) {
-  const double Dd = rho * s.W;
-  const double z = rho * s.h * s.W * s.W;
-  u[kD] = Dd;
-  u[kS1] = z * s.v_dn[0];
-  u[kS2] = z * s.v_dn[1];
-  u[kS3] = z * s.v_dn[2];
-  u[kTau] = z - s.press - Dd;
-  u[kDYe] = Dd * s.ye;
-  const double vt = alpha * s.v[D] - beta_d;
-  const double ap = alpha * s.press;
-#pragma GCC unroll 9
-  for (int c = 0; c < kNumCons; ++c) fl[c] = u[c] * vt;
-  fl[kS1 + D] += ap;
-  fl[kTau] += ap * s.v[D];
-  const double cs2 = s.cs2, v2 = s.v2, vd = s.v[D];
-  const double den = 1.0 / (1.0 - v2 * cs2);
-  const double disc = (1.0 - v2) * (g_up_d * (1.0 - v2 * cs2) - vd * vd * (1.0 - cs2));
-  const double root = std::sqrt(cs2 * (disc < 0.0 ? 0.0 : disc));  // std::max(disc, 0.0)
-  const double a = vd * (1.0 - cs2);
-  lm = alpha * (a - root) * den - beta_d;
-  lp = alpha * (a + root) * den - beta_d;
+[[gnu::always_inline]] inline PointMetric face_point_metric(const FaceMetricLine& fm, int f) {
+  PointMetric m;
+  m.alpha = fm.alpha[f];
+#pragma GCC unroll 3
+  for (int c = 0; c < 3; ++c) {
+    m.beta[c] = fm.beta[c][f];
+    m.g_dn[c] = fm.g_dn[c][f];
+  }
+  m.g_up[D] = fm.g_up_d[f];
+  return m;
 }
 
-// The velocity part of a side state from W v^i and the face metric.
-[[gnu::always_inline]] inline void side_velocity(SideState& s, const double* g_dn, double wv0, double wv1, double wv2) {
-  const double u2 = g_dn[0] * wv0 * wv0 + g_dn[1] * wv1 * wv1 + g_dn[2] * wv2 * wv2;
-  s.W = std::sqrt(1.0 + u2);
-  const double iW = 1.0 / s.W;
-  s.v[0] = wv0 * iW;
-  s.v[1] = wv1 * iW;
-  s.v[2] = wv2 * iW;
-#pragma GCC unroll 9
-  for (int i = 0; i < 3; ++i) s.v_dn[i] = g_dn[i] * s.v[i];
-  s.v2 = u2 * iW * iW;
-}
-
-// Ideal gas: p, eps, h, cs2 in closed form from the reconstructed pressure.
-[[gnu::always_inline]] inline void side_ideal_gas(SideState& s, double gamma, double rho, double thermal) {
-  const double p = thermal < 0.0 ? 0.0 : thermal;  // std::max(thermal, 0.0)
-  const double p_over_rho = p / rho;
-  s.press = p;
-  const double eps = p_over_rho / (gamma - 1.0);
-  s.h = 1.0 + gamma * eps;
-  s.cs2 = gamma * p_over_rho / s.h;
+// One side (Side 0: left, 1: right) of face f: rho, Ye, W v^i from the reconstructed states, then
+// the thermodynamics, in closed form for the ideal gas (complete_face_thermo) or from
+// face_thermo_line's work arrays.
+template <int Side, class E, int NumRec, int NumFlux>
+[[gnu::always_inline]] inline FluidState face_side_state(const E& eos, const PointMetric& m,
+                                                         const LineScratch<NumRec, NumFlux>& L, int f) {
+  double* const* st = Side == 0 ? L.left : L.right;
+  FluidState s;
+  s.rho = st[kRecRho][f];
+  set_velocity_from_wv(s, m, st[kRecWv1][f], st[kRecWv1 + 1][f], st[kRecWv1 + 2][f]);
+  if constexpr (reconstructs_pressure<E>) {
+    s.ye = st[kRecYe][f];
+    complete_face_thermo(eos, s, st[kRecThermal][f]);
+  } else {
+    s.press = L.work[kWorkPress + Side][f];
+    s.h = L.work[kWorkH + Side][f];
+    s.cs2 = L.work[kWorkCs2 + Side][f];
+    s.ye = L.work[kWorkYe + Side][f];
+  }
+  return s;
 }
 
 // HLL of hll_flux_n with its degenerate-width branch as a select.
@@ -109,41 +91,38 @@ template <int N>
   }
 }
 
-template <int D, class E, int NumRec, int NumFlux>
-inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>& L) {
-  constexpr bool ideal = reconstructs_pressure<E>;
-  [[maybe_unused]] double gamma = 0.0;
-  if constexpr (ideal) gamma = eos.gamma();
-  else face_thermo_line(eos, n, L);
-  const FaceMetricLine& fm = L.face;
+// The face loop; flatten: every pointwise function inlined whatever the inliner's budget (a call
+// left in the loop stops its vectorisation).
+template <int D, class E, int NumRec, int NumFlux, class Out>
+[[gnu::flatten]] inline void hydro_face_loop(const E& eos, int n, const LineScratch<NumRec, NumFlux>& L, const Out& out) {
 #pragma GCC ivdep
   for (int f = 0; f <= n; ++f) {
-    const double g_dn[3] = {fm.g_dn[0][f], fm.g_dn[1][f], fm.g_dn[2][f]};
-    const double alpha = fm.alpha[f], beta_d = fm.beta[D][f], g_up_d = fm.g_up_d[f];
-    SideState sl, sr;
-    side_velocity(sl, g_dn, L.left[kRecWv1][f], L.left[kRecWv1 + 1][f], L.left[kRecWv1 + 2][f]);
-    side_velocity(sr, g_dn, L.right[kRecWv1][f], L.right[kRecWv1 + 1][f], L.right[kRecWv1 + 2][f]);
-    const double rl = L.left[kRecRho][f], rr = L.right[kRecRho][f];
-    if constexpr (ideal) {
-      side_ideal_gas(sl, gamma, rl, L.left[kRecThermal][f]);
-      side_ideal_gas(sr, gamma, rr, L.right[kRecThermal][f]);
-      sl.ye = L.left[kRecYe][f];
-      sr.ye = L.right[kRecYe][f];
-    } else {
-      sl.press = L.work[kWorkPress][f], sr.press = L.work[kWorkPress + 1][f];
-      sl.h = L.work[kWorkH][f], sr.h = L.work[kWorkH + 1][f];
-      sl.cs2 = L.work[kWorkCs2][f], sr.cs2 = L.work[kWorkCs2 + 1][f];
-      sl.ye = L.work[kWorkYe][f], sr.ye = L.work[kWorkYe + 1][f];
-    }
+    const PointMetric m = face_point_metric<D>(L.face, f);
+    const FluidState sl = face_side_state<0>(eos, m, L, f), sr = face_side_state<1>(eos, m, L, f);
     double ul[kNumCons], ur[kNumCons], fl[kNumCons], fr[kNumCons], fh[kNumCons];
     double lml, lpl, lmr, lpr;
-    side_flux<D>(sl, rl, alpha, beta_d, g_up_d, ul, fl, lml, lpl);
-    side_flux<D>(sr, rr, alpha, beta_d, g_up_d, ur, fr, lmr, lpr);
+    conserved(sl, ul);
+    conserved(sr, ur);
+    flux(D, sl, m, ul, fl);
+    flux(D, sr, m, ur, fr);
+    characteristic_speeds(D, sl, m, lml, lpl);
+    characteristic_speeds(D, sr, m, lmr, lpr);
     hll_select<kNumCons>(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
-    const double psi6 = fm.psi6[f];
+    const double psi6 = L.face.psi6[f];
 #pragma GCC unroll 9
-    for (int c = 0; c < kNumCons; ++c) L.flux[c][f] = fh[c] * psi6;
+    for (int c = 0; c < kNumCons; ++c) out(c, f) = fh[c] * psi6;
   }
+}
+
+// Into `out` (a FaceOutput), or into L.flux.
+template <int D, class E, int NumRec, int NumFlux, class Out>
+inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>& L, const Out& out) {
+  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
+  hydro_face_loop<D>(eos, n, L, out);
+}
+template <int D, class E, int NumRec, int NumFlux>
+inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>& L) {
+  hydro_face_fluxes<D>(eos, n, L, face_output(L));
 }
 
 }  // namespace remnant::grmhd

@@ -2,6 +2,8 @@
 // Contiguous line buffers of one direction sweep (cells with ghosts, face states, metric, fluxes),
 // shared by the hydro and the MHD sweeps: the gather of a line (gather_line) and the metric at its
 // faces (set_face_metric), both stored as one array per quantity so that the face loops vectorise.
+#include <span>
+#include <type_traits>
 #include <vector>
 
 #include "GRMHD/face_thermo.hpp"
@@ -27,6 +29,8 @@ struct FaceMetricLine {
   double* g_up_d;    // gamma^dd of the sweep direction d
 };
 inline constexpr int kFaceMetricArrays = 9;
+// The stride of a line along x, known at compile time.
+using UnitStride = std::integral_constant<std::ptrdiff_t, 1>;
 // Per-face work arrays of a face kernel (the thermodynamics of both sides, ...).
 inline constexpr int kNumWork = 12;
 
@@ -37,18 +41,19 @@ struct LineScratch {
   double* cell[NumRec];        // cell values, offset so that [0] is the first interior cell
   double* left[NumRec];        // faces 0..n
   double* right[NumRec];
-  double* met[Metric::ncomp];  // cell metric along the line
   double* flux[NumFlux];       // face fluxes (weighted)
-  double* ppm;                 // reconstruction scratch
+  double* ppm;                 // reconstruction scratch (ppm_scratch())
   FaceMetricLine face;         // face metric
   double* work[kNumWork];      // faces 0..n
   int ng = 0;
+  // The whole reconstruction scratch (at least ppm_scratch_size(n) after ensure(n, ...)).
+  std::span<double> ppm_scratch() const { return {ppm, static_cast<std::size_t>(cap - 1)}; }
   void ensure(int n, int ngh) {
     const int len = n + 2 * ngh + 4;
     if (len <= cap && ngh == ng) return;
     cap = len;
     ng = ngh;
-    const int arrays = NumRec * 3 + Metric::ncomp + NumFlux + 1 + kFaceMetricArrays + kNumWork;
+    const int arrays = NumRec * 3 + NumFlux + 1 + kFaceMetricArrays + kNumWork;
     storage.assign(static_cast<std::size_t>(arrays) * static_cast<std::size_t>(len), 0.0);
     double* p = storage.data();
     auto take = [&](int offset) {
@@ -59,7 +64,6 @@ struct LineScratch {
     for (double*& a : cell) a = take(ngh + 1);
     for (double*& a : left) a = take(1);
     for (double*& a : right) a = take(1);
-    for (double*& a : met) a = take(ngh + 1);
     for (double*& a : flux) a = take(1);
     ppm = take(1);
     face.psi6 = take(1);
@@ -71,27 +75,23 @@ struct LineScratch {
   }
 };
 
-// Runs the face kernel `faces` (writing L.flux[c][0..n]) and stores L.flux[c] into out[c] + base at
-// stride `stride`; along x (stride 1) the kernel writes into out directly.
-template <int NumRec, int NumFlux, class Faces>
-inline void faces_to(LineScratch<NumRec, NumFlux>& L, double* const* out, std::ptrdiff_t base, std::ptrdiff_t stride, int n,
-                     Faces&& faces) {
-  if (stride == 1) {
-    double* own[NumFlux];
-    for (int c = 0; c < NumFlux; ++c) {
-      own[c] = L.flux[c];
-      L.flux[c] = out[c] + base;
-    }
-    faces();
-    for (int c = 0; c < NumFlux; ++c) L.flux[c] = own[c];
-    return;
-  }
-  faces();
-  for (int c = 0; c < NumFlux; ++c) {
-    const double* F = L.flux[c];
-    double* fo = out[c] + base;
-    for (int f = 0; f <= n; ++f) fo[f * stride] = F[f];
-  }
+// Where a face kernel writes its outputs: component c of face f at p[c][f * stride] (the flux
+// groups themselves, strided across x; UnitStride along x or into LineScratch::flux).
+template <int NumFlux, class Stride>
+struct FaceOutput {
+  double* p[NumFlux];
+  Stride stride;
+  double& operator()(int c, int f) const { return p[c][f * static_cast<std::ptrdiff_t>(stride)]; }
+};
+template <int NumFlux, class Stride>
+inline FaceOutput<NumFlux, Stride> face_output(double* const* out, std::ptrdiff_t base, Stride stride) {
+  FaceOutput<NumFlux, Stride> o{{}, stride};
+  for (int c = 0; c < NumFlux; ++c) o.p[c] = out[c] + base;
+  return o;
+}
+template <int NumRec, int NumFlux>
+inline FaceOutput<NumFlux, UnitStride> face_output(const LineScratch<NumRec, NumFlux>& L) {
+  return face_output<NumFlux>(L.flux, 0, UnitStride{});
 }
 
 inline double face_value(MetricFaceInterpolation m, const double* a, int f) {
@@ -124,7 +124,7 @@ struct LineSources {
 };
 
 // Copies the line at offset `base` (stride `stride`, n cells and ng ghosts each side) into L:
-// rho, W v^1..3, thermal, Ye into cell[0..5], the metric into met; the NumRec - 6 fields of `extra`
+// rho, W v^1..3, thermal, Ye into cell[0..5] (set_face_metric reads the metric in place); the NumRec - 6 fields of `extra`
 // (the MHD sweep's transverse B; nullptr for the hydro sweep) into cell[6..], read at the same points.
 template <int NumRec, int NumFlux>
 inline void gather_line(const LineSources& src, const double* const* extra, std::ptrdiff_t base, std::ptrdiff_t stride,
@@ -153,24 +153,24 @@ inline void gather_line(const LineSources& src, const double* const* extra, std:
     double* out = L.cell[kNumRecHydro + e];
     for (int m = -ng; m < n + ng; ++m) out[m] = px[m * stride];
   }
-  for (int c = 0; c < Metric::ncomp; ++c) {
-    const double* pm = src.met[c] + base;
-    double* out = L.met[c];
-    for (int m = -ng; m < n + ng; ++m) out[m] = pm[m * stride];
-  }
 }
 
 // The face metric of the line in direction d whose cells have the transverse indices of `idx`:
-// psi, alpha, beta interpolated to the faces (linear or cubic), psi^6, gamma_ii = psi^4 f_ii and
-// gamma^dd, with the bits of point_metric / point_metric_cartesian (valencia.hpp).
-template <int NumRec, int NumFlux>
+// psi, alpha, beta interpolated to the faces (linear or cubic) straight from the metric fields
+// (offset `base`, stride `stride`; a std::integral_constant along x), psi^6, gamma_ii = psi^4 f_ii
+// and gamma^dd, with the bits of point_metric / point_metric_cartesian (valencia.hpp).
+template <int NumRec, int NumFlux, class Stride>
 inline void set_face_metric(const Block& b, const PolarTrig& trig, MetricFaceInterpolation interp, int d,
-                            const int* idx, int n, LineScratch<NumRec, NumFlux>& L) {
+                            const int* idx, int n, const LineSources& src, std::ptrdiff_t base, Stride stride,
+                            LineScratch<NumRec, NumFlux>& L) {
   const FaceMetricLine& fm = L.face;
-  const double* mpsi = L.met[Metric::idx::psi];
-  const double* malpha = L.met[Metric::idx::alpha];
-  const double* mbeta[3] = {L.met[Metric::idx::beta], L.met[Metric::idx::beta2], L.met[Metric::idx::beta3]};
-  const auto fill = [&](auto face) {
+  const double* mpsi = src.met[Metric::idx::psi] + base;
+  const double* malpha = src.met[Metric::idx::alpha] + base;
+  const double* mbeta[3] = {src.met[Metric::idx::beta] + base, src.met[Metric::idx::beta2] + base,
+                            src.met[Metric::idx::beta3] + base};
+  const bool cartesian = b.coordinates == CoordinateSystem::cartesian;
+  // Cartesian: gamma^dd = 1 / psi^4 in the same loop.
+  const auto fill = [&](auto face, auto is_cartesian) {
     for (int f = 0; f <= n; ++f) {
       const double psi = face(mpsi, f);
       const double p2 = psi * psi;
@@ -179,16 +179,25 @@ inline void set_face_metric(const Block& b, const PolarTrig& trig, MetricFaceInt
       fm.alpha[f] = face(malpha, f);
       for (int c = 0; c < 3; ++c) fm.beta[c][f] = face(mbeta[c], f);
       for (int c = 0; c < 3; ++c) fm.g_dn[c][f] = psi4;
+      if constexpr (is_cartesian) fm.g_up_d[f] = 1.0 / psi4;
     }
   };
-  if (interp == MetricFaceInterpolation::cubic)
-    fill([](const double* a, int f) { return (9.0 * (a[f - 1] + a[f]) - (a[f - 2] + a[f + 1])) * (1.0 / 16.0); });
-  else
-    fill([](const double* a, int f) { return 0.5 * (a[f - 1] + a[f]); });
-  if (b.coordinates == CoordinateSystem::cartesian) {
-    for (int f = 0; f <= n; ++f) fm.g_up_d[f] = 1.0 / fm.g_dn[d][f];
-    return;
+  const auto cubic = [stride](const double* a, int f) {
+    const std::ptrdiff_t s = stride;
+    return (9.0 * (a[(f - 1) * s] + a[f * s]) - (a[(f - 2) * s] + a[(f + 1) * s])) * (1.0 / 16.0);
+  };
+  const auto linear = [stride](const double* a, int f) {
+    const std::ptrdiff_t s = stride;
+    return 0.5 * (a[(f - 1) * s] + a[f * s]);
+  };
+  if (interp == MetricFaceInterpolation::cubic) {
+    if (cartesian) fill(cubic, std::true_type{});
+    else fill(cubic, std::false_type{});
+  } else {
+    if (cartesian) fill(linear, std::true_type{});
+    else fill(linear, std::false_type{});
   }
+  if (cartesian) return;
   Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
   for (int f = 0; f <= n; ++f) {
     x[d] = b.face_coordinate(d, f);

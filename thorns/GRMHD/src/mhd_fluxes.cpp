@@ -110,8 +110,9 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.cell[kRecBPrev][m] *= h[prev];
         }
       }
-      for (int q = 0; q < kNumRecMhd; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
-      set_face_metric(b, trig, s.metric_faces, D, idx, n, L);
+      for (int q = 0; q < kNumRecMhd; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
+      if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
+      else set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, stride, L);
 
       Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
       // The face field is the sqrt(f)-weighted face mean of B^d; the face states need the point value
@@ -136,7 +137,9 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.work[kWorkInvNext][f] = h[next] != 0 ? 1.0 / h[next] : 0.0;
           L.work[kWorkInvPrev][f] = h[prev] != 0 ? 1.0 / h[prev] : 0.0;
         }
-      faces_to(L, out, fbase, fstride, n, [&] { mhd_face_fluxes<D>(eos, n, flux_weight, L); });
+      // Straight into the flux and ct groups (strided across x).
+      if constexpr (D == 0) mhd_face_fluxes<D>(eos, n, flux_weight, L, face_output<kNumFluxMhd>(out, fbase, UnitStride{}));
+      else mhd_face_fluxes<D>(eos, n, flux_weight, L, face_output<kNumFluxMhd>(out, fbase, fstride));
     }
 }
 

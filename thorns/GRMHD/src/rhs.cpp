@@ -5,7 +5,9 @@
 #include "rhs.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include "GRMHD/face_thermo.hpp"
@@ -47,9 +49,12 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
       const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
       const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
       gather_line(src, nullptr, base, stride, n, ng, L);
-      for (int q = 0; q < kNumRecHydro; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
-      set_face_metric(b, trig, s.metric_faces, D, idx, n, L);
-      faces_to(L, out, fbase, fstride, n, [&] { hydro_face_fluxes<D>(eos, n, L); });
+      for (int q = 0; q < kNumRecHydro; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
+      if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
+      else set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, stride, L);
+      // Straight into the flux groups (strided across x).
+      if constexpr (D == 0) hydro_face_fluxes<D>(eos, n, L, face_output<kNumCons>(out, fbase, UnitStride{}));
+      else hydro_face_fluxes<D>(eos, n, L, face_output<kNumCons>(out, fbase, fstride));
     }
 }
 
@@ -65,10 +70,82 @@ void subtract_divergence_transverse(double* __restrict out, const double* __rest
   for (int i = 0; i < n; ++i) out[i] -= (ap * F_plus[i] - am * F_minus[i]) * iv;
 }
 
+// The sources of a row of 3D Cartesian cells from o0 on (f = 1, no Christoffels, every direction
+// used): the per-cell code of divergence_and_sources with its coordinate, direction and shift
+// branches resolved outside the loop, and
+// flattened (every pointwise function inlined), so that the row vectorises; the same operations.
+// The flux divergence of such a row, as subtract_divergence_x / _transverse compute it from 0.0:
+// the fluxes of the row's faces and its face factors and volume weights.
+struct RowDivergence {
+  const double* x[kNumCons];  // x faces 0..n
+  const double* minus[2][kNumCons];  // y and z faces below and above the row
+  const double* plus[2][kNumCons];
+  const double* area_x;
+  const double* volume_x;
+  double area_plus[2], area_minus[2], inv_volume[2];
+};
+
+template <bool Mhd, bool Shift>
+[[gnu::flatten]] void cartesian_sources_row(const Field* prim, const Field* met, const Field* bf, const Field* rhs,
+                                            const RowDivergence& dv, std::ptrdiff_t o0,
+                                            const std::array<std::ptrdiff_t, 3>& st,
+                                            const std::array<double, 3>& inv2dx, int n) {
+  const std::array<std::array<double, 3>, 3> df{};
+  // ivdep: the rhs fields are written, the others only read (too many pairs for run-time alias checks).
+#pragma GCC ivdep
+  for (int i = 0; i < n; ++i) {
+    const std::ptrdiff_t o = o0 + i;
+    double out[kNumCons];
+#pragma GCC unroll 6
+    for (int c = 0; c < kNumCons; ++c) {
+      double r = 0.0;
+      r -= (dv.area_x[i + 1] * dv.x[c][i + 1] - dv.area_x[i] * dv.x[c][i]) * (1.0 / dv.volume_x[i]);
+      r -= (dv.area_plus[0] * dv.plus[0][c][i] - dv.area_minus[0] * dv.minus[0][c][i]) * dv.inv_volume[0];
+      r -= (dv.area_plus[1] * dv.plus[1][c][i] - dv.area_minus[1] * dv.minus[1][c][i]) * dv.inv_volume[1];
+      out[c] = r;
+    }
+    const double psi = met[Metric::idx::psi].origin[o], alpha = met[Metric::idx::alpha].origin[o];
+    const std::array<double, 3> beta{met[Metric::idx::beta].origin[o], met[Metric::idx::beta2].origin[o], met[Metric::idx::beta3].origin[o]};
+    const PointMetric pm = point_metric_cartesian(psi, alpha, beta);
+    MetricDerivatives dm;
+#pragma GCC unroll 3
+    for (int d = 0; d < 3; ++d) {
+      const std::ptrdiff_t s = st[d];
+      dm.dpsi[d] = (met[Metric::idx::psi].origin[o + s] - met[Metric::idx::psi].origin[o - s]) * inv2dx[d];
+      dm.dalpha[d] = (met[Metric::idx::alpha].origin[o + s] - met[Metric::idx::alpha].origin[o - s]) * inv2dx[d];
+      if constexpr (Shift)
+        for (int c = 0; c < 3; ++c)
+          dm.dbeta[d][c] = (met[Metric::idx::beta + c].origin[o + s] - met[Metric::idx::beta + c].origin[o - s]) * inv2dx[d];
+    }
+    FluidState fs;
+    fs.rho = prim[Prim::idx::rho].origin[o];
+    fs.press = prim[Prim::idx::press].origin[o];
+    fs.eps = prim[Prim::idx::eps].origin[o];
+    fs.h = 1.0 + fs.eps + fs.press / fs.rho;
+    fs.W = prim[Prim::idx::W].origin[o];
+    for (int c = 0; c < 3; ++c) {
+      fs.v[c] = prim[Prim::idx::vel + c].origin[o];
+      fs.v_dn[c] = pm.g_dn[c] * fs.v[c];
+    }
+    fs.v2 = fs.v[0] * fs.v_dn[0] + fs.v[1] * fs.v_dn[1] + fs.v[2] * fs.v_dn[2];
+    double src[kNumCons];
+    if constexpr (Mhd) {
+      const MagneticState ms = magnetic_state(fs, pm, bf[0].origin[o], bf[1].origin[o], bf[2].origin[o]);
+      gravity_sources_mhd(fs, ms, pm, psi, dm, df, nullptr, Shift, src, true);
+    } else {
+      gravity_sources(fs, pm, psi, dm, df, nullptr, Shift, src);
+    }
+    const double p2 = psi * psi, psi6 = p2 * p2 * p2;
+    rhs[kD].origin[o] = out[kD];
+    rhs[kDYe].origin[o] = out[kDYe];
+    for (int c = kS1; c <= kTau; ++c) rhs[c].origin[o] = out[c] + psi6 * src[c];
+  }
+}
+
 // Pass 2 over the cells of a block, i fastest. Mhd: the magnetised sources with the cell-centred
 // field of group `bvec` (B^i, not densitised); the hydro instantiation never touches it.
 template <bool Mhd>
-void divergence_and_sources(const Groups& g, Block& b, int bvec) {
+void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_rows = true) {
   Field prim[Prim::ncomp], met[Metric::ncomp], rhs[kNumCons], flux[3][kNumCons], bf[3];
   if constexpr (Mhd)
     for (int c = 0; c < 3; ++c) bf[c] = b.field(bvec, c);
@@ -91,10 +168,19 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
   // The shift terms cost a Christoffel evaluation: only where beta is not zero in this block.
   bool shift = false;
   {
+    // In chunks, OR-ing the bits without the sign (p != 0.0, -0.0 included), which vectorises; the
+    // whole array is read when beta = 0.
     const std::size_t np = b.points_per_component(g.metric);
     const double* p = b.data(g.metric) + static_cast<std::size_t>(Metric::idx::beta) * np;
-    for (std::size_t i = 0; i < 3 * np && !shift; ++i) shift = p[i] != 0.0;
+    constexpr std::size_t chunk = 256;
+    for (std::size_t i0 = 0; i0 < 3 * np && !shift; i0 += chunk) {
+      const std::size_t end = std::min(i0 + chunk, 3 * np);
+      std::uint64_t bits = 0;
+      for (std::size_t i = i0; i < end; ++i) bits |= std::bit_cast<std::uint64_t>(p[i]) << 1;
+      shift = bits != 0;
+    }
   }
+  const bool cartesian_3d = cartesian_rows && cartesian && used[0] && used[1] && used[2];
   const double* ff[3] = {b.face_factors(0), b.face_factors(1), b.face_factors(2)};
   const double* vw[3] = {b.volume_weights(0), b.volume_weights(1), b.volume_weights(2)};
   std::array<std::array<double, 3>, 3> df{};
@@ -107,6 +193,33 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec) {
   for (int c = 0; c < kNumCons; ++c) row[c] = row_storage.data() + static_cast<std::size_t>(c) * b.n[0];
   for (int k = 0; k < b.n[2]; ++k)
     for (int j = 0; j < b.n[1]; ++j) {
+      if (cartesian_3d) {
+        RowDivergence dv;
+        for (int d = 0; d < 3; ++d) {
+          const std::ptrdiff_t fo = j * flux[d][0].sj + k * flux[d][0].sk;
+          const int id = d == 1 ? j : k;
+          for (int c = 0; c < kNumCons; ++c) {
+            const double* F = flux[d][c].origin + fo;
+            if (d == 0) {
+              dv.x[c] = F;
+            } else {
+              dv.minus[d - 1][c] = F;
+              dv.plus[d - 1][c] = F + fst[d];
+            }
+          }
+          if (d > 0) {
+            dv.area_plus[d - 1] = ff[d][id + 1];
+            dv.area_minus[d - 1] = ff[d][id];
+            dv.inv_volume[d - 1] = 1.0 / vw[d][id];
+          }
+        }
+        dv.area_x = ff[0];
+        dv.volume_x = vw[0];
+        const std::ptrdiff_t o0 = j * met[0].sj + k * met[0].sk;
+        (shift ? cartesian_sources_row<Mhd, true> : cartesian_sources_row<Mhd, false>)(prim, met, bf, rhs, dv, o0, st,
+                                                                                     inv2dx, b.n[0]);
+        continue;
+      }
       // Flux divergence: (A+ F+ - A- F-) / V with A/V reduced to the 1D factors of direction d.
       for (int c = 0; c < kNumCons; ++c) std::fill(row[c], row[c] + b.n[0], 0.0);
       for (int d = 0; d < 3; ++d) {
@@ -204,5 +317,11 @@ void compute_block_fluxes(const eos::EOS& eos, const RhsSettings& s, const Group
 void compute_block_rhs(const Groups& g, Block& b) { divergence_and_sources<false>(g, b, -1); }
 
 void compute_block_rhs_mhd(const Groups& g, int bvec, Block& b) { divergence_and_sources<true>(g, b, bvec); }
+
+void compute_block_rhs_per_cell(const Groups& g, Block& b) { divergence_and_sources<false>(g, b, -1, false); }
+
+void compute_block_rhs_mhd_per_cell(const Groups& g, int bvec, Block& b) {
+  divergence_and_sources<true>(g, b, bvec, false);
+}
 
 }  // namespace remnant::grmhd

@@ -20,5 +20,9 @@ void compute_block_fluxes(const eos::EOS& eos, const RhsSettings& s, const Group
 void compute_block_rhs(const Groups& g, Block& b);
 // Pass 2 with the magnetised stress tensor in the sources (cell-centred B^i in group `bvec`).
 void compute_block_rhs_mhd(const Groups& g, int bvec, Block& b);
+// The same cell by cell, without the vectorised rows that 3D Cartesian blocks take (the tests
+// compare the two bit for bit).
+void compute_block_rhs_per_cell(const Groups& g, Block& b);
+void compute_block_rhs_mhd_per_cell(const Groups& g, int bvec, Block& b);
 
 }  // namespace remnant::grmhd
