@@ -29,6 +29,7 @@ struct CompositeMultigrid::Impl {
   std::vector<double> base_u, base_f;
   std::vector<std::pair<int, int>> part_of;  // (tier, patch) of each part
   std::vector<PartGeometry> geometry;
+  CellShare share, ghosted_share;  // the pointwise work's split over interior and ghosted cells
 
   MPI_Comm comm;
   int rank = 0, nranks = 1;

@@ -61,6 +61,10 @@ CompositeMultigrid::Impl::Impl(const CompositeLayout& l, MPI_Comm c) : layout(l)
       }
       geometry.push_back(std::move(g));
     }
+  std::vector<std::size_t> cells, ghosted;
+  for (const PartGeometry& g : geometry) cells.push_back(g.shape.cells()), ghosted.push_back(g.frames().f.size());
+  share = CellShare(cells, comm);
+  ghosted_share = CellShare(ghosted, comm);
 }
 
 void CompositeMultigrid::Impl::expand(int t, Cell I, double w, unsigned mask, double falloff, bool dirichlet, std::vector<Term>& out) const {
@@ -292,6 +296,15 @@ CompositeField CompositeMultigrid::field(double value) const {
   CompositeField f;
   for (const auto& g : impl_->geometry) f.part.emplace_back(g.shape.cells(), value);
   return f;
+}
+
+const CellShare& CompositeMultigrid::share(bool ghosted) const { return ghosted ? impl_->ghosted_share : impl_->share; }
+void CompositeMultigrid::complete(std::initializer_list<CompositeField*> fields, bool ghosted) const {
+  const CellShare& s = share(ghosted);
+  if (!s.split()) return;
+  std::vector<std::vector<std::vector<double>>*> parts;
+  for (CompositeField* f : fields) parts.push_back(&f->part);
+  s.complete(parts);
 }
 
 void CompositeMultigrid::fill_covered(CompositeField& f) const {
