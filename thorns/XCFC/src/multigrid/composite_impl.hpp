@@ -72,11 +72,11 @@ struct CompositeMultigrid::Impl {
   static void add_mode_term(Level& L, AngularMode mode);
 
   template <class Fine, class Coarse>
-  void restrict_tier(int t, Fine&& fine, Coarse&& coarse) const {
-    xcfc::restrict_tier(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)], fine, coarse);
+  void restrict_tier(int t, Fine&& fine, Coarse&& coarse, std::size_t p0 = 0, std::size_t p1 = SIZE_MAX) const {
+    xcfc::restrict_tier(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)], fine, coarse, p0, p1);
   }
-  void restrict_point_values(int t) {
-    xcfc::restrict_point_values(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)]);
+  void restrict_point_values(int t, std::size_t p0 = 0, std::size_t p1 = SIZE_MAX) {
+    xcfc::restrict_point_values(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)], p0, p1);
   }
 
   void set_equation(const CompositeEquation& eq);
@@ -101,8 +101,15 @@ struct CompositeMultigrid::Impl {
   // after the line passes).
   void relax_lines(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps);
 
-  // r = f - A(u) on every patch of the tier (ghosts filled first).
-  void residual(int t, const ScalarEquation& eq, const std::array<double, 64>& par);
+  // This rank's patches of tier t >= 1: those of its units in the point split (single patches dealt
+  // out in contiguous chunks, so a range of patch indices). All of them on one rank.
+  std::pair<std::size_t, std::size_t> own_patches(int t) const { return mine(tiers[static_cast<std::size_t>(t)].points); }
+  // Restriction split by fine patch: each rank restricts its own patches of tier t into their
+  // footprints in tier t - 1 (the ghosts of its patches filled first), then the footprints' u (and
+  // with `residual` their restricted residual r) go to every rank (MPI_Allgatherv), so tier t - 1 is
+  // whole again: the same values, computed once instead of by every rank.
+  void restrict_own_patches(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool residual);
+  void exchange_footprints(int t, bool residual);
 
   // Interpolates (quadratic, from the coarse window) `source` of tier t - 1 into the patches of
   // tier t: added to u (a correction) or replacing it.
@@ -120,6 +127,8 @@ struct CompositeMultigrid::Impl {
     double max = 0, scale = 0, above_floor = 0;
   };
   LeafResidual leaf_residual(const ScalarEquation& eq, const std::array<double, 64>& par);
+  // This rank's planes of the base level for leaf_residual (the whole level on one rank or in 1D).
+  Range base_share(const Level& B) const;
 
   void load(const CompositeField& u, bool nonlinear);
   void store(CompositeField& u) const;

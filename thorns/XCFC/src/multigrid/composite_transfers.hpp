@@ -2,7 +2,9 @@
 // Transfers between a composite level (tier) and the next coarser one: the coarse cell of a fine
 // cell, volume-weighted restriction into covered cells, and the point-value restriction of the
 // solution.
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "composite_tier.hpp"
@@ -12,12 +14,12 @@ namespace remnant::xcfc {
 // Interior index, in the parent patch, of the coarse cell holding fine cell (i, j, k) of patch p.
 std::size_t coarse_cell(const Tier& T, const Tier& C, std::size_t p, int i, int j, int k);
 
-// Volume-weighted restriction of interior values of every patch of T into its parent's covered
-// cells in C (interior arrays through the accessors fine(p, q) and coarse(p, q)).
+// Volume-weighted restriction of interior values of the patches [p0, p1) of T (all by default) into
+// their parents' covered cells in C (interior arrays through the accessors fine(p, q) and coarse(p, q)).
 template <class Fine, class Coarse>
-void restrict_tier(const Tier& T, const Tier& C, Fine&& fine, Coarse&& coarse) {
+void restrict_tier(const Tier& T, const Tier& C, Fine&& fine, Coarse&& coarse, std::size_t p0 = 0, std::size_t p1 = SIZE_MAX) {
   std::vector<double> sum, vol;
-  for (std::size_t p = 0; p < T.patches.size(); ++p) {
+  for (std::size_t p = p0; p < std::min(p1, T.patches.size()); ++p) {
     const Level& P = T.patches[p];
     const Level& Q = C.patches[static_cast<std::size_t>(T.parent[p])];
     sum.assign(Q.cells(), 0.0);
@@ -39,6 +41,15 @@ void restrict_tier(const Tier& T, const Tier& C, Fine&& fine, Coarse&& coarse) {
 // The composite discretisation reads covered values as point values (in the stencils of the
 // neighbouring coarse leaf cells and in the fine ghosts' interpolation); a plain or volume-weighted
 // mean would be off by O(H^2) there, an O(1) truncation error along the interface.
-void restrict_point_values(const Tier& T, Tier& C);
+// Only the patches [p0, p1) of T (all by default).
+void restrict_point_values(const Tier& T, Tier& C, std::size_t p0 = 0, std::size_t p1 = SIZE_MAX);
+
+// The footprint of patch p of T in its parent patch of C: the parent and its interior cell range
+// [lo, lo + n) per direction (the covered cells that p's cells restrict into).
+struct Footprint {
+  std::size_t parent;
+  std::array<int, 3> lo, n;
+};
+Footprint footprint(const Tier& T, const Tier& C, std::size_t p);
 
 }  // namespace remnant::xcfc

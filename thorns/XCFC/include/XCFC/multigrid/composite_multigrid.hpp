@@ -15,6 +15,7 @@
 // base level's work is split between the ranks (bit-identical to one rank).
 #include <mpi.h>
 
+#include <algorithm>
 #include <array>
 #include <initializer_list>
 #include <memory>
@@ -76,19 +77,18 @@ inline void for_part_cells(const PartGeometry& g, F&& f) {
       for (int i = 0; i < s.n[0]; ++i) f(q++, static_cast<std::size_t>(g.at(i, j, k)), i, j, k);
 }
 
-// Interior cells [begin, end) of a part (storage order), with the same arguments as for_part_cells.
+// Interior cells [begin, end) of a part (storage order), with the same arguments as for_part_cells:
+// row by row, the ghosted index stepping with i (its stride is 1).
 template <class F>
 inline void for_part_cells(const PartGeometry& g, std::size_t begin, std::size_t end, F&& f) {
-  if (begin >= end) return;
   const GridShape& s = g.shape;
   const auto n0 = static_cast<std::size_t>(s.n[0]), n1 = static_cast<std::size_t>(s.n[1]);
-  int i = static_cast<int>(begin % n0), j = static_cast<int>((begin / n0) % n1), k = static_cast<int>(begin / (n0 * n1));
-  for (std::size_t q = begin; q < end; ++q) {
-    f(q, static_cast<std::size_t>(g.at(i, j, k)), i, j, k);
-    if (++i == s.n[0]) {
-      i = 0;
-      if (++j == s.n[1]) j = 0, ++k;
-    }
+  for (std::size_t q = begin; q < end;) {
+    int i = static_cast<int>(q % n0);
+    const int j = static_cast<int>((q / n0) % n1), k = static_cast<int>(q / (n0 * n1));
+    const std::size_t row_end = std::min(end, q + (n0 - static_cast<std::size_t>(i)));
+    auto p = static_cast<std::size_t>(g.at(i, j, k));
+    for (; q < row_end; ++q, ++i, ++p) f(q, p, i, j, k);
   }
 }
 
