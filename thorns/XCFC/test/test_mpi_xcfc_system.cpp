@@ -81,6 +81,19 @@ void check(const char* name, XcfcSolver& serial, XcfcSolver& parallel) {
     EXPECT_TRUE(same_bits(a.X[d], b.X[d])) << name << ": X " << d;
     EXPECT_TRUE(same_bits(a.beta[d], b.beta[d])) << name << ": beta " << d;
   }
+  // The covered cells' restriction of a field (the grid bridge's gathers): each rank restricts its
+  // own patches, the footprints are exchanged.
+  CompositeField ca = a.alpha_psi, cb = a.alpha_psi;
+  for (int n = 0; n < serial.multigrid().parts(); ++n)
+    for (std::size_t q = 0; q < ca.part[n].size(); ++q)
+      if (serial.multigrid().covered(n, q)) ca.part[n][q] = cb.part[n][q] = 0;
+  serial.multigrid().fill_covered(ca);
+  parallel.multigrid().fill_covered(cb);
+  EXPECT_TRUE(same_bits(ca, cb)) << name << ": covered cells";
+  long long refilled = 0;  // covered cells given their children's mean (alpha psi ~ 1: nonzero)
+  for (int n = 0; n < serial.multigrid().parts(); ++n)
+    for (std::size_t q = 0; q < cb.part[n].size(); ++q) refilled += serial.multigrid().covered(n, q) && cb.part[n][q] > 0.5;
+  if (serial.multigrid().parts() > 1) EXPECT_GT(refilled, 0) << name;
   // The problem is not trivial: momenta give A^ij and a shift.
   double amax = 0, bmax = 0;
   for (const auto& p : a.A2.part)

@@ -210,41 +210,12 @@ void CompositeMultigrid::Impl::restrict_own_patches(int t, const ScalarEquation&
 }
 
 void CompositeMultigrid::Impl::exchange_footprints(int t, bool with_residual) {
-  if (nranks == 1) return;
-  const Tier& T = tiers[static_cast<std::size_t>(t)];
   Tier& C = tiers[static_cast<std::size_t>(t - 1)];
-  const Tier::Split& S = T.points;
-  const int per = with_residual ? 2 : 1;
-  // Each footprint's cells in storage order, u then (with_residual) r per cell.
-  auto visit = [&](std::size_t p, auto&& f) {
-    const Footprint fp = footprint(T, C, p);
-    Level& Q = C.patches[fp.parent];
-    for (int k = fp.lo[2]; k < fp.lo[2] + fp.n[2]; ++k)
-      for (int j = fp.lo[1]; j < fp.lo[1] + fp.n[1]; ++j)
-        for (int i = fp.lo[0]; i < fp.lo[0] + fp.n[0]; ++i) {
-          f(Q.u[static_cast<std::size_t>(Q.at(i, j, k))]);
-          if (with_residual) f(Q.r[Q.cell(i, j, k)]);
-        }
-  };
-  std::vector<int> counts(static_cast<std::size_t>(nranks), 0), displs(static_cast<std::size_t>(nranks), 0);
-  for (int r = 0; r < nranks; ++r) {
-    for (std::size_t u = S.first[static_cast<std::size_t>(r)]; u < S.first[static_cast<std::size_t>(r) + 1]; ++u) {
-      const Footprint fp = footprint(T, C, static_cast<std::size_t>(S.units[u][0]));
-      counts[static_cast<std::size_t>(r)] += per * fp.n[0] * fp.n[1] * fp.n[2];
-    }
-    if (r > 0) displs[static_cast<std::size_t>(r)] = displs[static_cast<std::size_t>(r) - 1] + counts[static_cast<std::size_t>(r) - 1];
-  }
-  std::vector<double> mine_buf, all(static_cast<std::size_t>(displs.back() + counts.back()));
-  const auto [u0, u1] = mine(S);
-  for (std::size_t u = u0; u < u1; ++u) visit(static_cast<std::size_t>(S.units[u][0]), [&](double& x) { mine_buf.push_back(x); });
-  MPI_Allgatherv(mine_buf.data(), static_cast<int>(mine_buf.size()), MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, comm);
-  for (int r = 0; r < nranks; ++r) {
-    if (r == rank) continue;
-    std::size_t at = static_cast<std::size_t>(displs[static_cast<std::size_t>(r)]);
-    for (std::size_t u = S.first[static_cast<std::size_t>(r)]; u < S.first[static_cast<std::size_t>(r) + 1]; ++u)
-      visit(static_cast<std::size_t>(S.units[u][0]), [&](double& x) { x = all[at++]; });
-  }
+  exchange_footprint_values(t, with_residual ? 2 : 1, [&](std::size_t parent, int i, int j, int k, auto&& value) {
+    Level& Q = C.patches[parent];
+    value(Q.u[static_cast<std::size_t>(Q.at(i, j, k))]);
+    if (with_residual) value(Q.r[Q.cell(i, j, k)]);
+  });
 }
 
 }  // namespace remnant::xcfc

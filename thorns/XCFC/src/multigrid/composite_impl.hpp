@@ -110,6 +110,11 @@ struct CompositeMultigrid::Impl {
   // whole again: the same values, computed once instead of by every rank.
   void restrict_own_patches(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool residual);
   void exchange_footprints(int t, bool residual);
+  // The values under the footprints in tier t - 1 of every patch of tier t, from the rank owning
+  // the patch (point split) to every rank: values(parent, i, j, k, value) calls value(double&)
+  // `per` times for each footprint cell (interior indices of the parent patch).
+  template <class Values>
+  void exchange_footprint_values(int t, int per, Values&& values) const;
 
   // Interpolates (quadratic, from the coarse window) `source` of tier t - 1 into the patches of
   // tier t: added to u (a correction) or replacing it.
@@ -137,6 +142,38 @@ struct CompositeMultigrid::Impl {
   // Covered cells hold the restriction of the finer solution (finest first).
   void restrict_solution(const ScalarEquation& eq, const std::array<double, 64>& par);
 };
+
+template <class Values>
+void CompositeMultigrid::Impl::exchange_footprint_values(int t, int per, Values&& values) const {
+  if (nranks == 1) return;
+  const Tier& T = tiers[static_cast<std::size_t>(t)];
+  const Tier& C = tiers[static_cast<std::size_t>(t - 1)];
+  const Tier::Split& S = T.points;
+  auto visit = [&](std::size_t u, auto&& value) {
+    const Footprint fp = footprint(T, C, static_cast<std::size_t>(S.units[u][0]));
+    for (int k = fp.lo[2]; k < fp.lo[2] + fp.n[2]; ++k)
+      for (int j = fp.lo[1]; j < fp.lo[1] + fp.n[1]; ++j)
+        for (int i = fp.lo[0]; i < fp.lo[0] + fp.n[0]; ++i) values(fp.parent, i, j, k, value);
+  };
+  const auto R = static_cast<std::size_t>(nranks);
+  std::vector<int> counts(R, 0), displs(R, 0);
+  for (std::size_t r = 0; r < R; ++r) {
+    for (std::size_t u = S.first[r]; u < S.first[r + 1]; ++u) {
+      const Footprint fp = footprint(T, C, static_cast<std::size_t>(S.units[u][0]));
+      counts[r] += per * fp.n[0] * fp.n[1] * fp.n[2];
+    }
+    if (r > 0) displs[r] = displs[r - 1] + counts[r - 1];
+  }
+  std::vector<double> own, all(static_cast<std::size_t>(displs.back() + counts.back()));
+  const auto [u0, u1] = mine(S);
+  for (std::size_t u = u0; u < u1; ++u) visit(u, [&](double& x) { own.push_back(x); });
+  MPI_Allgatherv(own.data(), static_cast<int>(own.size()), MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, comm);
+  for (std::size_t r = 0; r < R; ++r) {
+    if (static_cast<int>(r) == rank) continue;
+    auto at = static_cast<std::size_t>(displs[r]);
+    for (std::size_t u = S.first[r]; u < S.first[r + 1]; ++u) visit(u, [&](double& x) { x = all[at++]; });
+  }
+}
 
 // (A template: used by the cycle and by with_ghosts.)
 template <class Field>
