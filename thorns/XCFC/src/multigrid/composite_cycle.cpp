@@ -95,17 +95,28 @@ void CompositeMultigrid::Impl::vcycle(const ScalarEquation& eq, const std::array
     Tier& C = tiers[static_cast<std::size_t>(t - 1)];
     // The solution and the residual restricted into r and u of the coarse patches' covered cells.
     restrict_own_patches(t, eq, par, true);
+    // The coarse right-hand side in the covered cells, A(R u) + R r: each rank for the footprints of
+    // its own fine patches (the rows through them), then exchanged like the restriction.
     fill(t - 1, eq, par);
-    for (std::size_t p = 0; p < C.patches.size(); ++p) {
-      Level& Q = C.patches[p];
-      std::vector<double>& Au = C.scratch[p];
+    const auto [p0, p1] = own_patches(t);
+    for (std::size_t p = p0; p < p1; ++p) {
+      const Footprint fp = footprint(tiers[static_cast<std::size_t>(t)], C, p);
+      Level& Q = C.patches[fp.parent];
+      std::vector<double>& Au = C.scratch[fp.parent];
       Au.resize(Q.cells());
-      apply_operator(Q, Q.u, Au, full_range(Q));
-      const auto& cov = C.covered[p];
-      for (std::size_t q = 0; q < Q.cells(); ++q)
-        if (cov[q]) Q.f[q] = Au[q] + Q.r[q];
-      C.ubar[p] = Q.u;
+      apply_operator(Q, Q.u, Au, {fp.lo[1], fp.lo[1] + fp.n[1], fp.lo[2], fp.lo[2] + fp.n[2]});
+      for (int k = fp.lo[2]; k < fp.lo[2] + fp.n[2]; ++k)
+        for (int j = fp.lo[1]; j < fp.lo[1] + fp.n[1]; ++j)
+          for (int i = fp.lo[0]; i < fp.lo[0] + fp.n[0]; ++i) {
+            const std::size_t q = Q.cell(i, j, k);
+            Q.f[q] = Au[q] + Q.r[q];
+          }
     }
+    exchange_footprint_values(t, 1, [&](std::size_t parent, int i, int j, int k, auto&& value) {
+      Level& Q = C.patches[parent];
+      value(Q.f[Q.cell(i, j, k)]);
+    });
+    for (std::size_t p = 0; p < C.patches.size(); ++p) C.ubar[p] = C.patches[p].u;
   }
   // Base V-cycle.
   Level& B = tiers[0].patches[0];
