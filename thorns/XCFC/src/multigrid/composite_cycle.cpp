@@ -131,9 +131,14 @@ void CompositeMultigrid::Impl::vcycle(const ScalarEquation& eq, const std::array
       C.corr[p].resize(u.size());
       for (std::size_t m = 0; m < u.size(); ++m) C.corr[p][m] = u[m] - C.ubar[p][m];
     }
+    // Each rank corrects its own patches; the interiors are exchanged before the relaxation (whose
+    // ghosts read other ranks' patches).
+    Tier& T = tiers[static_cast<std::size_t>(t)];
+    const auto [p0, p1] = own_patches(t);
     interpolate_up(t, eq, par, true, [&](int tier, int patch) -> const std::vector<double>& {
       return tiers[static_cast<std::size_t>(tier)].corr[static_cast<std::size_t>(patch)];
-    });
+    }, p0, p1);
+    exchange(T, T.points);
     relax(t, eq, par, s.post_sweeps);
   }
 }

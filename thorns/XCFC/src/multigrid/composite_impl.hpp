@@ -5,6 +5,7 @@
 // composite_cycle.cpp (ghost filling, relaxation, residuals, interpolation, the composite V-cycle).
 #include <mpi.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <map>
@@ -116,10 +117,11 @@ struct CompositeMultigrid::Impl {
   template <class Values>
   void exchange_footprint_values(int t, int per, Values&& values) const;
 
-  // Interpolates (quadratic, from the coarse window) `source` of tier t - 1 into the patches of
-  // tier t: added to u (a correction) or replacing it.
+  // Interpolates (quadratic, from the coarse window) `source` of tier t - 1 into the patches [p0, p1)
+  // of tier t (all by default): added to u (a correction) or replacing it.
   template <class Field>
-  void interpolate_up(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool correction, Field&& source);
+  void interpolate_up(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool correction, Field&& source,
+                      std::size_t p0 = 0, std::size_t p1 = SIZE_MAX);
 
   // ---- the composite V-cycle --------------------------------------------------------------------
   void vcycle(const ScalarEquation& eq, const std::array<double, 64>& par, const SolveSettings& s);
@@ -177,11 +179,12 @@ void CompositeMultigrid::Impl::exchange_footprint_values(int t, int per, Values&
 
 // (A template: used by the cycle and by with_ghosts.)
 template <class Field>
-void CompositeMultigrid::Impl::interpolate_up(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool correction, Field&& source) {
+void CompositeMultigrid::Impl::interpolate_up(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool correction, Field&& source,
+                                              std::size_t p0, std::size_t p1) {
   Tier& T = tiers[static_cast<std::size_t>(t)];
   const Recipes& R = recipes_for(eq);
   std::vector<double> win;
-  for (std::size_t p = 0; p < T.patches.size(); ++p) {
+  for (std::size_t p = p0; p < std::min(p1, T.patches.size()); ++p) {
     Level& P = T.patches[p];
     win.assign(T.window_size[p], 0.0);
     for (const Recipe& r : R.window[static_cast<std::size_t>(t)][p]) win[r.target] = evaluate(R, r, par, eq, correction, source);
