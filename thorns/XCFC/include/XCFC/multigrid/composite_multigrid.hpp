@@ -11,8 +11,8 @@
 // interpolated coarse correction and relaxing. Patch ghosts come from neighbouring patches of the
 // same level, from the physical boundary conditions, or by tensor-product quadratic interpolation of
 // the next coarser level (error O(h^3), so the interface cells' truncation error is O(h) and the
-// solution stays second order). Every rank holds all patches and computes them redundantly; the
-// base level's work is split between the ranks (bit-identical to one rank).
+// solution stays second order). Every rank holds all patches; the relaxation, residuals and
+// transfers are split by patch and the base level's work by slabs (bit-identical to one rank).
 #include <mpi.h>
 
 #include <algorithm>
