@@ -20,6 +20,8 @@ import subprocess
 import sys
 import tempfile
 
+from remnant_run import command, run_or_exit
+
 ENTRY = re.compile(r"\s*([\d,]+)\s+\(\s*[\d.]+%\)\s+(.*)$")
 MPI_CALL = re.compile(r":P?MPI_[A-Z][a-z_]+ \[")
 
@@ -49,15 +51,9 @@ def short(name):
 def run(a, nprocs, out):
     tag = os.path.join(out, f"cg{nprocs}")
     vg = [a.valgrind, "--tool=callgrind", "--toggle-collect=remnant::xcfc::step_*"]
-    if nprocs == 1:
-        cmd = vg + [f"--callgrind-out-file={tag}.0.out"]
-    else:  # one output per rank (%q: the environment variable Open MPI sets per rank)
-        cmd = [a.mpirun, "-np", str(nprocs), "--oversubscribe"] + vg + [f"--callgrind-out-file={tag}.%q{{OMPI_COMM_WORLD_RANK}}.out"]
-    cmd += [a.exe, a.parfile, *a.overrides, f"Flesh::out_dir={out}/run{nprocs}"]
-    r = subprocess.run(cmd, capture_output=True, text=True)
-    if r.returncode != 0:
-        sys.stderr.write(r.stdout[-3000:] + r.stderr[-3000:])
-        sys.exit(f"rank_instructions: the run failed (exit {r.returncode}): {' '.join(cmd)}")
+    # One output per rank (%q: the environment variable Open MPI sets per rank).
+    vg.append(f"--callgrind-out-file={tag}.0.out" if nprocs == 1 else f"--callgrind-out-file={tag}.%q{{OMPI_COMM_WORLD_RANK}}.out")
+    run_or_exit(command(a.exe, a.parfile, a.overrides, f"{out}/run{nprocs}", nprocs, a.mpirun, vg), "rank_instructions")
     ranks = []
     for rank in range(nprocs):
         path = f"{tag}.{rank}.out"

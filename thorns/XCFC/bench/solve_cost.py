@@ -11,25 +11,12 @@ that time over MoL_Step per call.
 import argparse
 import csv
 import os
-import re
-import subprocess
 import sys
 import tempfile
 
+from remnant_run import command, run_or_exit, timers
+
 SOLVE_STEPS = ["XCFC::XCFC_VectorPotential", "XCFC::XCFC_ConformalFactor", "XCFC::XCFC_Lapse", "XCFC::XCFC_Shift"]
-ROW = re.compile(r"^\s+(\S+::\S+)\s+(\d+)\s+([0-9.]+)\s+([0-9.]+)\s*$")
-
-
-def timers(text):
-    """{function: (calls, seconds)} from the timer table at the end of a run (first table printed)."""
-    out = {}
-    for line in text.splitlines():
-        m = ROW.match(line)
-        if m and m.group(1) not in out:
-            out[m.group(1)] = (int(m.group(2)), float(m.group(3)))
-    return out
-
-
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--exe", default="build/bin/remnant")
@@ -39,13 +26,7 @@ def main():
     ap.add_argument("overrides", nargs="*")
     a = ap.parse_args()
     out = tempfile.mkdtemp(prefix="xcfc_cost_")
-    cmd = [a.exe, a.parfile, *a.overrides, f"Flesh::out_dir={out}"]
-    if a.np > 1:
-        cmd = [a.mpirun, "-np", str(a.np), "--oversubscribe", *cmd]
-    run = subprocess.run(cmd, capture_output=True, text=True)
-    if run.returncode != 0:
-        sys.stderr.write(run.stdout[-4000:] + run.stderr[-4000:])
-        sys.exit(f"solve_cost: the run failed (exit {run.returncode}): {' '.join(cmd)}")
+    run = run_or_exit(command(a.exe, a.parfile, a.overrides, out, a.np, a.mpirun), "solve_cost")
     t = timers(run.stdout + run.stderr)
     missing = [k for k in SOLVE_STEPS + ["MoL::MoL_Step"] if k not in t]
     if missing:

@@ -70,12 +70,13 @@ VectorField to_cartesian(const CompositeMultigrid& mg, const VectorField& up) {
     const PartGeometry& g = mg.part(n);
     const CellFrames& fr = g.frames();
     const auto &u0 = up[0].part[n], &u1 = up[1].part[n], &u2 = up[2].part[n];
-    for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
+    for_share_cells(mg, n, [&](std::size_t q, std::size_t p, int, int, int) {
       const Matrix3& J = fr.J[p];
       for (int a = 0; a < 3; ++a)
         if (active[a]) out[a].part[n][q] = J[a][0] * u0[q] + J[a][1] * u1[q] + J[a][2] * u2[q];
     });
   }
+  mg.complete({&out[0], &out[1], &out[2]});
   return out;
 }
 Point3 from_cartesian(const CellFrames& fr, std::size_t p, double V0, double V1, double V2) {
@@ -90,11 +91,12 @@ VectorField to_coordinate(const CompositeMultigrid& mg, const VectorField& cart)
   for (int n = 0; n < mg.parts(); ++n) {
     const PartGeometry& g = mg.part(n);
     const CellFrames& fr = g.frames();
-    for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
+    for_share_cells(mg, n, [&](std::size_t q, std::size_t p, int, int, int) {
       const Point3 v = from_cartesian(fr, p, cart[0].part[n][q], cart[1].part[n][q], cart[2].part[n][q]);
       for (int c = 0; c < 3; ++c) out[c].part[n][q] = v[c];
     });
   }
+  mg.complete({&out[0], &out[1], &out[2]});
   return out;
 }
 }  // namespace
@@ -143,18 +145,18 @@ VectorField ghosted_coordinate_components(CompositeMultigrid& mg, const VectorFi
   VectorField gc;
   for (int a = 0; a < 3; ++a) gc[a] = mg.with_ghosts(cartesian_component_equation(s, a), cart[a]);
   VectorField out = sized(mg, true);
+  // Every ghosted cell, in storage order: this rank's share of them (CellShare over ghosted arrays).
+  const CellShare& share = mg.share(true);
   for (int n = 0; n < mg.parts(); ++n) {
-    const PartGeometry& g = mg.part(n);
-    const GridShape& ps = g.shape;
-    const CellFrames& fr = g.frames();
-    for (int k = -g.ghosts[2]; k < ps.n[2] + g.ghosts[2]; ++k)
-      for (int j = -g.ghosts[1]; j < ps.n[1] + g.ghosts[1]; ++j)
-        for (int i = -g.ghosts[0]; i < ps.n[0] + g.ghosts[0]; ++i) {
-          const std::size_t p = static_cast<std::size_t>(g.at(i, j, k));
-          const Point3 v = from_cartesian(fr, p, gc[0].part[n][p], gc[1].part[n][p], gc[2].part[n][p]);
-          for (int c = 0; c < 3; ++c) out[c].part[n][p] = v[c];
-        }
+    const CellFrames& fr = mg.part(n).frames();
+    const auto [b, e] = share.range(n);
+    share.count(e - b);
+    for (std::size_t p = b; p < e; ++p) {
+      const Point3 v = from_cartesian(fr, p, gc[0].part[n][p], gc[1].part[n][p], gc[2].part[n][p]);
+      for (int c = 0; c < 3; ++c) out[c].part[n][p] = v[c];
+    }
   }
+  mg.complete({&out[0], &out[1], &out[2]}, true);
   return out;
 }
 
@@ -177,7 +179,7 @@ CompositeField divergence(CompositeMultigrid& mg, const VectorField& up) {
         hi_w[d][static_cast<std::size_t>(i)] = coords::volume_factor(s.coordinates, d, b) / w;
       }
     }
-    for_part_cells(pg, [&](std::size_t q, std::size_t p, int i, int j, int k) {
+    for_share_cells(mg, n, [&](std::size_t q, std::size_t p, int i, int j, int k) {
       const std::array<int, 3> ijk{i, j, k};
       double sum = 0;
       for (int d = 0; d < s.dimension; ++d) {
@@ -189,6 +191,7 @@ CompositeField divergence(CompositeMultigrid& mg, const VectorField& up) {
       div.part[n][q] = sum;
     });
   }
+  mg.complete({&div});
   return div;
 }
 
@@ -352,11 +355,12 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
     const PartGeometry& g = mg.part(n);
     const auto& st = g.strides;
     const auto& gc = gchi.part[n];
-    for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
+    for_share_cells(mg, n, [&](std::size_t q, std::size_t p, int, int, int) {
       const Point3& f = g.frames().f[p];
       for (int d = 0; d < s.dimension; ++d) X_up[d].part[n][q] -= 0.25 * (gc[p + st[d]] - gc[p - st[d]]) / (2 * g.shape.dx[d] * f[d]);
     });
   }
+  mg.complete({&X_up[0], &X_up[1], &X_up[2]});
   return stats;
 }
 

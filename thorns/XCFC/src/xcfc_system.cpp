@@ -15,6 +15,14 @@ void for_every_cell(const CompositeField& like, F&& f) {
     for (std::size_t q = 0; q < like.part[n].size(); ++q) f(n, q);
 }
 
+// f(n, q) for this rank's share of the cells of every part (CellShare); the caller completes what
+// it wrote (CompositeMultigrid::complete).
+template <class F>
+void for_shared_cells(const CompositeMultigrid& mg, F&& f) {
+  for (int n = 0; n < mg.parts(); ++n)
+    for_share_cells(mg, n, [&](std::size_t q, std::size_t, int, int, int) { f(static_cast<std::size_t>(n), q); });
+}
+
 double max_abs_times(const CompositeField& E, double factor) {
   double m = 0;
   for (const auto& part : E.part)
@@ -27,11 +35,12 @@ VectorField raise(const CompositeMultigrid& mg, const VectorField& dn, double fa
   for (auto& c : up) c = mg.field();
   for (int n = 0; n < mg.parts(); ++n) {
     const PartGeometry& g = mg.part(n);
-    for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
+    for_share_cells(mg, n, [&](std::size_t q, std::size_t p, int, int, int) {
       const Point3& f = g.frames().f[p];
       for (int c = 0; c < 3; ++c) up[c].part[n][q] = factor * dn[c].part[n][q] / f[c];
     });
   }
+  mg.complete({&up[0], &up[1], &up[2]});
   return up;
 }
 }  // namespace
@@ -71,7 +80,7 @@ void XcfcSolver::compute_A(XcfcState& st) {
     const GridShape& s = pg.shape;
     const auto& stride = pg.strides;
     const std::vector<CompactChristoffels>& gamma = geo.christoffels(n);
-    for_part_cells(pg, [&](std::size_t q, std::size_t p, int, int, int) {
+    for_share_cells(mg_, n, [&](std::size_t q, std::size_t p, int, int, int) {
       const Point3& f = pg.frames().f[p];
       const Christoffels G = expand(gamma[q]);
       double X[3], D[3][3];  // D[a][b] = nabla_a X^b
@@ -94,6 +103,7 @@ void XcfcSolver::compute_A(XcfcState& st) {
       st.A2.part[n][q] = A2;
     });
   }
+  mg_.complete({&st.A[0], &st.A[1], &st.A[2], &st.A[3], &st.A[4], &st.A[5], &st.A2});
 }
 
 void XcfcSolver::solve_conformal_factor(const CompositeField& E, const VectorField& S_dn, XcfcState& st,
@@ -117,10 +127,11 @@ void XcfcSolver::solve_psi(const CompositeField& E, XcfcState& st, XcfcStats& st
   eq.boundary = conformal_factor_equation();
   eq.s1 = mg_.field();
   eq.s7 = mg_.field();
-  for_every_cell(eq.s1, [&](std::size_t n, std::size_t q) {
+  for_shared_cells(mg_, [&](std::size_t n, std::size_t q) {
     eq.s1.part[n][q] = -2 * pi * E.part[n][q];
     eq.s7.part[n][q] = -0.125 * st.A2.part[n][q];
   });
+  mg_.complete({&eq.s1, &eq.s7});
   if (st.psi.part.size() != eq.s1.part.size()) st.psi = mg_.field(1.0);
   stats.psi = mg_.solve(eq, st.psi, settings);
 }
@@ -151,10 +162,11 @@ void XcfcSolver::solve_lapse(const CompositeField& E, const CompositeField& S_tr
   CompositeEquation eq;
   eq.boundary = lapse_equation();
   eq.k = mg_.field();
-  for_every_cell(eq.k, [&](std::size_t n, std::size_t q) {
+  for_shared_cells(mg_, [&](std::size_t n, std::size_t q) {
     const double psi = st.psi.part[n][q], p2 = psi * psi, p4 = p2 * p2;
     eq.k.part[n][q] = 2 * pi * (E.part[n][q] + 2 * S_trace.part[n][q]) / p2 + 0.875 * st.A2.part[n][q] / (p4 * p4);
   });
+  mg_.complete({&eq.k});
   if (st.alpha_psi.part.size() != eq.k.part.size()) st.alpha_psi = st.psi;
   stats.alpha_psi = mg_.solve(eq, st.alpha_psi, settings);
 }
@@ -163,10 +175,11 @@ void XcfcSolver::solve_shift(const CompositeField& E, const VectorField& S_dn, X
                              const SolveSettings& settings) {
   // Shift source: 16 pi alpha psi^-6 f^ij S~_j + 2 A^ij d_j (alpha psi^-6).
   CompositeField w = mg_.field();
-  for_every_cell(w, [&](std::size_t n, std::size_t q) {
+  for_shared_cells(mg_, [&](std::size_t n, std::size_t q) {
     const double p = st.psi.part[n][q], p2 = p * p, p4 = p2 * p2;
     w.part[n][q] = st.alpha_psi.part[n][q] / (p4 * p2 * p);
   });
+  mg_.complete({&w});
   ScalarEquation weq;
   weq.far_value = 1.0;
   const CompositeField gw = mg_.with_ghosts(weq, w);
@@ -177,7 +190,7 @@ void XcfcSolver::solve_shift(const CompositeField& E, const VectorField& S_dn, X
     const GridShape& s = pg.shape;
     const auto& stride = pg.strides;
     const auto& g = gw.part[n];
-    for_part_cells(pg, [&](std::size_t q, std::size_t p, int, int, int) {
+    for_share_cells(mg_, n, [&](std::size_t q, std::size_t p, int, int, int) {
       const Point3& f = pg.frames().f[p];
       double dw[3] = {0, 0, 0};
       for (int d = 0; d < s.dimension; ++d) dw[d] = (g[p + stride[d]] - g[p - stride[d]]) / (2 * s.dx[d]);
@@ -188,6 +201,7 @@ void XcfcSolver::solve_shift(const CompositeField& E, const VectorField& S_dn, X
       }
     });
   }
+  mg_.complete({&src[0], &src[1], &src[2]});
   SolveSettings vset = settings;
   vset.scale_floor = std::max(vset.scale_floor, max_abs_times(E, 2 * pi));
   stats.beta = solve_vector_poisson(mg_, src, st.beta_potentials, st.beta, vset);

@@ -212,11 +212,13 @@ void check_composite(const char* name, const GridShape& base, std::array<int, 3>
     EXPECT_EQ(total, sa.relaxed_cells) << name;
     EXPECT_GT(sa.relaxed_cells, 0) << name;
     if (nranks == 2) EXPECT_NEAR(double(mine) / double(total), 0.5, 0.1) << name;
-    // The patch ghosts before each relaxation pass are filled for this rank's units only (the
-    // residuals and transfers still fill every patch): measured 0.65-0.66 of one rank's on 2 ranks.
+    // The patch ghosts are filled for this rank's units only: before each relaxation pass, and for
+    // the residuals and restrictions (each rank restricts its own patches into the coarse covered
+    // cells, the leaf residual is reduced from each rank's patches): measured 0.51-0.52 of one
+    // rank's on 2 ranks (0.65-0.66 when the residuals and transfers filled every patch).
     EXPECT_GT(sa.ghost_entries, 0) << name;
     if (nranks == 1) EXPECT_EQ(sa.ghost_entries, sb.ghost_entries) << name;
-    if (nranks == 2) EXPECT_LE(double(sb.ghost_entries), 0.8 * double(sa.ghost_entries)) << name;
+    if (nranks == 2) EXPECT_LE(double(sb.ghost_entries), 0.55 * double(sa.ghost_entries)) << name;
     if (rank == 0) std::printf("composite %-14s patch ghosts filled by rank 0 / one rank: %.3f\n", name, double(sb.ghost_entries) / double(sa.ghost_entries));
     if (rank == 0)
       std::printf("composite %-14s %s: %d parts, %d V-cycles, bits equal to one rank; finest level relaxed by rank 0: %.3f; "

@@ -88,35 +88,35 @@ void CompositeMultigrid::Impl::relax_lines(int t, const ScalarEquation& eq, cons
   }
 }
 
-void CompositeMultigrid::Impl::residual(int t, const ScalarEquation& eq, const std::array<double, 64>& par) {
-  fill(t, eq, par);
-  for (auto& P : tiers[static_cast<std::size_t>(t)].patches) {
-    apply_operator(P, P.u, P.r, full_range(P));
-    for (std::size_t q = 0; q < P.cells(); ++q) P.r[q] = P.f[q] - P.r[q];
-  }
-}
-
 void CompositeMultigrid::Impl::vcycle(const ScalarEquation& eq, const std::array<double, 64>& par, const SolveSettings& s) {
   const int L = static_cast<int>(tiers.size()) - 1;
   for (int t = L; t >= 1; --t) {
     relax(t, eq, par, s.pre_sweeps);
-    residual(t, eq, par);
-    Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
-    restrict_point_values(t);  // ghosts filled by residual()
-    // The restricted residual, kept in r of the coarse patches' covered cells.
-    restrict_tier(t, [&](std::size_t p, std::size_t q) { return T.patches[p].r[q]; },
-                  [&](std::size_t p, std::size_t q) -> double& { return C.patches[p].r[q]; });
+    Tier& C = tiers[static_cast<std::size_t>(t - 1)];
+    // The solution and the residual restricted into r and u of the coarse patches' covered cells.
+    restrict_own_patches(t, eq, par, true);
+    // The coarse right-hand side in the covered cells, A(R u) + R r: each rank for the footprints of
+    // its own fine patches (the rows through them), then exchanged like the restriction.
     fill(t - 1, eq, par);
-    for (std::size_t p = 0; p < C.patches.size(); ++p) {
-      Level& Q = C.patches[p];
-      std::vector<double>& Au = C.scratch[p];
+    const auto [p0, p1] = own_patches(t);
+    for (std::size_t p = p0; p < p1; ++p) {
+      const Footprint fp = footprint(tiers[static_cast<std::size_t>(t)], C, p);
+      Level& Q = C.patches[fp.parent];
+      std::vector<double>& Au = C.scratch[fp.parent];
       Au.resize(Q.cells());
-      apply_operator(Q, Q.u, Au, full_range(Q));
-      const auto& cov = C.covered[p];
-      for (std::size_t q = 0; q < Q.cells(); ++q)
-        if (cov[q]) Q.f[q] = Au[q] + Q.r[q];
-      C.ubar[p] = Q.u;
+      apply_operator(Q, Q.u, Au, {fp.lo[1], fp.lo[1] + fp.n[1], fp.lo[2], fp.lo[2] + fp.n[2]});
+      for (int k = fp.lo[2]; k < fp.lo[2] + fp.n[2]; ++k)
+        for (int j = fp.lo[1]; j < fp.lo[1] + fp.n[1]; ++j)
+          for (int i = fp.lo[0]; i < fp.lo[0] + fp.n[0]; ++i) {
+            const std::size_t q = Q.cell(i, j, k);
+            Q.f[q] = Au[q] + Q.r[q];
+          }
     }
+    exchange_footprint_values(t, 1, [&](std::size_t parent, int i, int j, int k, auto&& value) {
+      Level& Q = C.patches[parent];
+      value(Q.f[Q.cell(i, j, k)]);
+    });
+    for (std::size_t p = 0; p < C.patches.size(); ++p) C.ubar[p] = C.patches[p].u;
   }
   // Base V-cycle.
   Level& B = tiers[0].patches[0];
@@ -131,50 +131,107 @@ void CompositeMultigrid::Impl::vcycle(const ScalarEquation& eq, const std::array
       C.corr[p].resize(u.size());
       for (std::size_t m = 0; m < u.size(); ++m) C.corr[p][m] = u[m] - C.ubar[p][m];
     }
+    // Each rank corrects its own patches; the interiors are exchanged before the relaxation (whose
+    // ghosts read other ranks' patches).
+    Tier& T = tiers[static_cast<std::size_t>(t)];
+    const auto [p0, p1] = own_patches(t);
     interpolate_up(t, eq, par, true, [&](int tier, int patch) -> const std::vector<double>& {
       return tiers[static_cast<std::size_t>(tier)].corr[static_cast<std::size_t>(patch)];
-    });
+    }, p0, p1);
+    exchange(T, T.points);
     relax(t, eq, par, s.post_sweeps);
   }
 }
 
+// Each rank evaluates the residual of its share of the leaf cells only (the base level's planes along
+// its last used direction, and its patches of each tier's point split) and the maxima are reduced:
+// a max is exact in any order, so the bits of the result do not depend on the number of ranks. The
+// residuals of the other ranks' cells are left stale: the V-cycle recomputes every residual it reads.
 CompositeMultigrid::Impl::LeafResidual CompositeMultigrid::Impl::leaf_residual(const ScalarEquation& eq, const std::array<double, 64>& par) {
-  double rmax = 0, smax = 0, excess = 0;
+  double m[3] = {0, 0, 0};  // max |r|, max of the source terms, max of |r| above each cell's floor
   constexpr double ulps = 256 * std::numeric_limits<double>::epsilon();
+  auto account = [&](const Level& P, const std::vector<char>& covered, const Range& R) {
+    const Ops o(P);
+    for_cells(P, R, [&](std::size_t q, std::ptrdiff_t g) {
+      if (covered[q]) return;
+      const double u = P.u[static_cast<std::size_t>(g)];
+      double sc = std::abs(o.k[q] * u) + std::abs(o.s0[q]);
+      if (o.s1) sc += std::abs(o.s1[q] / u);
+      if (o.s7) sc += std::abs(o.s7[q] / std::pow(u, 7));
+      m[0] = std::max(m[0], std::abs(P.r[q]));
+      m[2] = std::max(m[2], std::abs(P.r[q]) - ulps * P.diagonal[q] * std::abs(u));
+      m[1] = std::max(m[1], sc);
+    });
+  };
   for (int t = 0; t < static_cast<int>(tiers.size()); ++t) {
     Tier& T = tiers[static_cast<std::size_t>(t)];
     if (t == 0) {
       Level& B = T.patches[0];
       fill(0, eq, par);
-      apply_operator(B, B.u, B.r, full_range(B));
-      for (std::size_t q = 0; q < B.cells(); ++q) B.r[q] = -B.r[q];
-    } else {
-      for (auto& P : T.patches) std::fill(P.f.begin(), P.f.end(), 0.0);
-      residual(t, eq, par);
+      const Range R = base_share(B);
+      apply_operator(B, B.u, B.r, R);
+      for_cells(B, R, [&](std::size_t q, std::ptrdiff_t) { B.r[q] = -B.r[q]; });
+      account(B, T.covered[0], R);
+      continue;
     }
-    for (std::size_t p = 0; p < T.patches.size(); ++p) {
-      const Level& P = T.patches[p];
-      const Ops o(P);
-      for_cells(P, full_range(P), [&](std::size_t q, std::ptrdiff_t g) {
-        if (T.covered[p][q]) return;
-        const double u = P.u[static_cast<std::size_t>(g)];
-        double sc = std::abs(o.k[q] * u) + std::abs(o.s0[q]);
-        if (o.s1) sc += std::abs(o.s1[q] / u);
-        if (o.s7) sc += std::abs(o.s7[q] / std::pow(u, 7));
-        rmax = std::max(rmax, std::abs(P.r[q]));
-        excess = std::max(excess, std::abs(P.r[q]) - ulps * P.diagonal[q] * std::abs(u));
-        smax = std::max(smax, sc);
-      });
+    for (auto& P : T.patches) std::fill(P.f.begin(), P.f.end(), 0.0);
+    fill(t, eq, par, &T.points);  // the ghosts of this rank's patches
+    const auto [u0, u1] = mine(T.points);
+    for (std::size_t n = u0; n < u1; ++n) {
+      const auto p = static_cast<std::size_t>(T.points.units[n][0]);
+      Level& P = T.patches[p];
+      apply_operator(P, P.u, P.r, full_range(P));
+      for (std::size_t q = 0; q < P.cells(); ++q) P.r[q] = P.f[q] - P.r[q];
+      account(P, T.covered[p], full_range(P));
     }
   }
-  return {rmax, smax, excess};
+  if (nranks > 1) MPI_Allreduce(MPI_IN_PLACE, m, 3, MPI_DOUBLE, MPI_MAX, comm);
+  return {m[0], m[1], m[2]};
+}
+
+Range CompositeMultigrid::Impl::base_share(const Level& B) const {
+  Range R = full_range(B);
+  if (nranks == 1) return R;
+  // Planes along the last used direction (i is never split: Range holds whole rows).
+  const int d = B.shape.dimension;
+  if (d < 2) return R;
+  int& lo = d == 3 ? R.k0 : R.j0;
+  int& hi = d == 3 ? R.k1 : R.j1;
+  const int n = hi;
+  lo = n * rank / nranks;
+  hi = n * (rank + 1) / nranks;
+  return R;
 }
 
 void CompositeMultigrid::Impl::restrict_solution(const ScalarEquation& eq, const std::array<double, 64>& par) {
-  for (int t = static_cast<int>(tiers.size()) - 1; t >= 1; --t) {
-    fill(t, eq, par);
-    restrict_point_values(t);
-  }
+  for (int t = static_cast<int>(tiers.size()) - 1; t >= 1; --t) restrict_own_patches(t, eq, par, false);
+}
+
+void CompositeMultigrid::Impl::restrict_own_patches(int t, const ScalarEquation& eq, const std::array<double, 64>& par,
+                                                     bool with_residual) {
+  Tier &T = tiers[static_cast<std::size_t>(t)], &C = tiers[static_cast<std::size_t>(t - 1)];
+  const auto [p0, p1] = own_patches(t);
+  fill(t, eq, par, &T.points);  // restrict_point_values reads the fine ghosts
+  if (with_residual)
+    for (std::size_t p = p0; p < p1; ++p) {
+      Level& P = T.patches[p];
+      apply_operator(P, P.u, P.r, full_range(P));
+      for (std::size_t q = 0; q < P.cells(); ++q) P.r[q] = P.f[q] - P.r[q];
+    }
+  restrict_point_values(t, p0, p1);
+  if (with_residual)
+    restrict_tier(t, [&](std::size_t p, std::size_t q) { return T.patches[p].r[q]; },
+                  [&](std::size_t p, std::size_t q) -> double& { return C.patches[p].r[q]; }, p0, p1);
+  exchange_footprints(t, with_residual);
+}
+
+void CompositeMultigrid::Impl::exchange_footprints(int t, bool with_residual) {
+  Tier& C = tiers[static_cast<std::size_t>(t - 1)];
+  exchange_footprint_values(t, with_residual ? 2 : 1, [&](std::size_t parent, int i, int j, int k, auto&& value) {
+    Level& Q = C.patches[parent];
+    value(Q.u[static_cast<std::size_t>(Q.at(i, j, k))]);
+    if (with_residual) value(Q.r[Q.cell(i, j, k)]);
+  });
 }
 
 }  // namespace remnant::xcfc

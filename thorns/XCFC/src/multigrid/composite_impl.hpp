@@ -5,6 +5,7 @@
 // composite_cycle.cpp (ghost filling, relaxation, residuals, interpolation, the composite V-cycle).
 #include <mpi.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <map>
@@ -29,6 +30,7 @@ struct CompositeMultigrid::Impl {
   std::vector<double> base_u, base_f;
   std::vector<std::pair<int, int>> part_of;  // (tier, patch) of each part
   std::vector<PartGeometry> geometry;
+  CellShare share, ghosted_share;  // the pointwise work's split over interior and ghosted cells
 
   MPI_Comm comm;
   int rank = 0, nranks = 1;
@@ -71,11 +73,11 @@ struct CompositeMultigrid::Impl {
   static void add_mode_term(Level& L, AngularMode mode);
 
   template <class Fine, class Coarse>
-  void restrict_tier(int t, Fine&& fine, Coarse&& coarse) const {
-    xcfc::restrict_tier(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)], fine, coarse);
+  void restrict_tier(int t, Fine&& fine, Coarse&& coarse, std::size_t p0 = 0, std::size_t p1 = SIZE_MAX) const {
+    xcfc::restrict_tier(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)], fine, coarse, p0, p1);
   }
-  void restrict_point_values(int t) {
-    xcfc::restrict_point_values(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)]);
+  void restrict_point_values(int t, std::size_t p0 = 0, std::size_t p1 = SIZE_MAX) {
+    xcfc::restrict_point_values(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t - 1)], p0, p1);
   }
 
   void set_equation(const CompositeEquation& eq);
@@ -100,13 +102,26 @@ struct CompositeMultigrid::Impl {
   // after the line passes).
   void relax_lines(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps);
 
-  // r = f - A(u) on every patch of the tier (ghosts filled first).
-  void residual(int t, const ScalarEquation& eq, const std::array<double, 64>& par);
+  // This rank's patches of tier t >= 1: those of its units in the point split (single patches dealt
+  // out in contiguous chunks, so a range of patch indices). All of them on one rank.
+  std::pair<std::size_t, std::size_t> own_patches(int t) const { return mine(tiers[static_cast<std::size_t>(t)].points); }
+  // Restriction split by fine patch: each rank restricts its own patches of tier t into their
+  // footprints in tier t - 1 (the ghosts of its patches filled first), then the footprints' u (and
+  // with `residual` their restricted residual r) go to every rank (MPI_Allgatherv), so tier t - 1 is
+  // whole again: the same values, computed once instead of by every rank.
+  void restrict_own_patches(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool residual);
+  void exchange_footprints(int t, bool residual);
+  // The values under the footprints in tier t - 1 of every patch of tier t, from the rank owning
+  // the patch (point split) to every rank: values(parent, i, j, k, value) calls value(double&)
+  // `per` times for each footprint cell (interior indices of the parent patch).
+  template <class Values>
+  void exchange_footprint_values(int t, int per, Values&& values) const;
 
-  // Interpolates (quadratic, from the coarse window) `source` of tier t - 1 into the patches of
-  // tier t: added to u (a correction) or replacing it.
+  // Interpolates (quadratic, from the coarse window) `source` of tier t - 1 into the patches [p0, p1)
+  // of tier t (all by default): added to u (a correction) or replacing it.
   template <class Field>
-  void interpolate_up(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool correction, Field&& source);
+  void interpolate_up(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool correction, Field&& source,
+                      std::size_t p0 = 0, std::size_t p1 = SIZE_MAX);
 
   // ---- the composite V-cycle --------------------------------------------------------------------
   void vcycle(const ScalarEquation& eq, const std::array<double, 64>& par, const SolveSettings& s);
@@ -119,6 +134,8 @@ struct CompositeMultigrid::Impl {
     double max = 0, scale = 0, above_floor = 0;
   };
   LeafResidual leaf_residual(const ScalarEquation& eq, const std::array<double, 64>& par);
+  // This rank's planes of the base level for leaf_residual (the whole level on one rank or in 1D).
+  Range base_share(const Level& B) const;
 
   void load(const CompositeField& u, bool nonlinear);
   void store(CompositeField& u) const;
@@ -128,13 +145,46 @@ struct CompositeMultigrid::Impl {
   void restrict_solution(const ScalarEquation& eq, const std::array<double, 64>& par);
 };
 
+template <class Values>
+void CompositeMultigrid::Impl::exchange_footprint_values(int t, int per, Values&& values) const {
+  if (nranks == 1) return;
+  const Tier& T = tiers[static_cast<std::size_t>(t)];
+  const Tier& C = tiers[static_cast<std::size_t>(t - 1)];
+  const Tier::Split& S = T.points;
+  auto visit = [&](std::size_t u, auto&& value) {
+    const Footprint fp = footprint(T, C, static_cast<std::size_t>(S.units[u][0]));
+    for (int k = fp.lo[2]; k < fp.lo[2] + fp.n[2]; ++k)
+      for (int j = fp.lo[1]; j < fp.lo[1] + fp.n[1]; ++j)
+        for (int i = fp.lo[0]; i < fp.lo[0] + fp.n[0]; ++i) values(fp.parent, i, j, k, value);
+  };
+  const auto R = static_cast<std::size_t>(nranks);
+  std::vector<int> counts(R, 0), displs(R, 0);
+  for (std::size_t r = 0; r < R; ++r) {
+    for (std::size_t u = S.first[r]; u < S.first[r + 1]; ++u) {
+      const Footprint fp = footprint(T, C, static_cast<std::size_t>(S.units[u][0]));
+      counts[r] += per * fp.n[0] * fp.n[1] * fp.n[2];
+    }
+    if (r > 0) displs[r] = displs[r - 1] + counts[r - 1];
+  }
+  std::vector<double> own, all(static_cast<std::size_t>(displs.back() + counts.back()));
+  const auto [u0, u1] = mine(S);
+  for (std::size_t u = u0; u < u1; ++u) visit(u, [&](double& x) { own.push_back(x); });
+  MPI_Allgatherv(own.data(), static_cast<int>(own.size()), MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, comm);
+  for (std::size_t r = 0; r < R; ++r) {
+    if (static_cast<int>(r) == rank) continue;
+    auto at = static_cast<std::size_t>(displs[r]);
+    for (std::size_t u = S.first[r]; u < S.first[r + 1]; ++u) visit(u, [&](double& x) { x = all[at++]; });
+  }
+}
+
 // (A template: used by the cycle and by with_ghosts.)
 template <class Field>
-void CompositeMultigrid::Impl::interpolate_up(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool correction, Field&& source) {
+void CompositeMultigrid::Impl::interpolate_up(int t, const ScalarEquation& eq, const std::array<double, 64>& par, bool correction, Field&& source,
+                                              std::size_t p0, std::size_t p1) {
   Tier& T = tiers[static_cast<std::size_t>(t)];
   const Recipes& R = recipes_for(eq);
   std::vector<double> win;
-  for (std::size_t p = 0; p < T.patches.size(); ++p) {
+  for (std::size_t p = p0; p < std::min(p1, T.patches.size()); ++p) {
     Level& P = T.patches[p];
     win.assign(T.window_size[p], 0.0);
     for (const Recipe& r : R.window[static_cast<std::size_t>(t)][p]) win[r.target] = evaluate(R, r, par, eq, correction, source);

@@ -61,6 +61,10 @@ CompositeMultigrid::Impl::Impl(const CompositeLayout& l, MPI_Comm c) : layout(l)
       }
       geometry.push_back(std::move(g));
     }
+  std::vector<std::size_t> cells, ghosted;
+  for (const PartGeometry& g : geometry) cells.push_back(g.shape.cells()), ghosted.push_back(g.frames().f.size());
+  share = CellShare(cells, comm);
+  ghosted_share = CellShare(ghosted, comm);
 }
 
 void CompositeMultigrid::Impl::expand(int t, Cell I, double w, unsigned mask, double falloff, bool dirichlet, std::vector<Term>& out) const {
@@ -198,12 +202,19 @@ void CompositeMultigrid::Impl::set_equation(const CompositeEquation& eq) {
   for (int t = static_cast<int>(tiers.size()) - 1; t >= 1; --t) {
     auto& T = tiers[static_cast<std::size_t>(t)];
     auto& C = tiers[static_cast<std::size_t>(t - 1)];
-    auto pass = [&](std::vector<double> Level::*a) {
-      if ((T.patches[0].*a).empty()) return;
+    // Each rank restricts its own patches; the footprints of all four go to every rank at once.
+    const auto [p0, p1] = own_patches(t);
+    std::vector<std::vector<double> Level::*> present;
+    for (auto a : {&Level::k_eq, &Level::s0, &Level::s1, &Level::s7}) {
+      if ((T.patches[0].*a).empty()) continue;
+      present.push_back(a);
       restrict_tier(t, [&](std::size_t p, std::size_t q) { return (T.patches[p].*a)[q]; },
-                    [&](std::size_t p, std::size_t q) -> double& { return (C.patches[p].*a)[q]; });
-    };
-    pass(&Level::k_eq), pass(&Level::s0), pass(&Level::s1), pass(&Level::s7);
+                    [&](std::size_t p, std::size_t q) -> double& { return (C.patches[p].*a)[q]; }, p0, p1);
+    }
+    exchange_footprint_values(t, static_cast<int>(present.size()), [&](std::size_t parent, int i, int j, int k, auto&& value) {
+      Level& Q = C.patches[parent];
+      for (auto a : present) value((Q.*a)[Q.cell(i, j, k)]);
+    });
   }
   for (auto& T : tiers)
     for (auto& P : T.patches) {
@@ -294,11 +305,27 @@ CompositeField CompositeMultigrid::field(double value) const {
   return f;
 }
 
+const CellShare& CompositeMultigrid::share(bool ghosted) const { return ghosted ? impl_->ghosted_share : impl_->share; }
+void CompositeMultigrid::complete(std::initializer_list<CompositeField*> fields, bool ghosted) const {
+  const CellShare& s = share(ghosted);
+  if (!s.split()) return;
+  std::vector<std::vector<std::vector<double>>*> parts;
+  for (CompositeField* f : fields) parts.push_back(&f->part);
+  s.complete(parts);
+}
+
 void CompositeMultigrid::fill_covered(CompositeField& f) const {
+  // Each rank restricts its own patches (point split) and the footprints are exchanged, finest first.
   const Impl& m = *impl_;
-  for (int t = static_cast<int>(m.tiers.size()) - 1; t >= 1; --t)
+  for (int t = static_cast<int>(m.tiers.size()) - 1; t >= 1; --t) {
+    const auto [p0, p1] = m.own_patches(t);
     m.restrict_tier(t, [&](std::size_t p, std::size_t q) { return f.part[m.part_index(t, p)][q]; },
-                    [&](std::size_t p, std::size_t q) -> double& { return f.part[m.part_index(t - 1, p)][q]; });
+                    [&](std::size_t p, std::size_t q) -> double& { return f.part[m.part_index(t - 1, p)][q]; }, p0, p1);
+    const Tier& C = m.tiers[static_cast<std::size_t>(t - 1)];
+    m.exchange_footprint_values(t, 1, [&](std::size_t parent, int i, int j, int k, auto&& value) {
+      value(f.part[m.part_index(t - 1, parent)][C.patches[parent].cell(i, j, k)]);
+    });
+  }
 }
 
 CompositeField CompositeMultigrid::with_ghosts(const ScalarEquation& boundary, const CompositeField& u) {

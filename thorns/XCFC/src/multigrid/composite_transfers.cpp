@@ -12,13 +12,22 @@ std::size_t coarse_cell(const Tier& T, const Tier& C, std::size_t p, int i, int 
   return C.patches[static_cast<std::size_t>(T.parent[p])].cell(g[0], g[1], g[2]);
 }
 
-void restrict_point_values(const Tier& T, Tier& C) {
+Footprint footprint(const Tier& T, const Tier& C, std::size_t p) {
+  Footprint f{static_cast<std::size_t>(T.parent[p]), {0, 0, 0}, {1, 1, 1}};
+  const Cell& F = T.corner[p];
+  const Cell& Pc = C.corner[f.parent];
+  for (int d = 0; d < 3; ++d)
+    if (T.shape.used(d)) f.lo[d] = static_cast<int>(F[d] / 2 - Pc[d]), f.n[d] = T.nb[d] / 2;
+  return f;
+}
+
+void restrict_point_values(const Tier& T, Tier& C, std::size_t p0, std::size_t p1) {
   std::array<int, 3> half{1, 1, 1};
   int dims = 0;
   for (int d = 0; d < 3; ++d)
     if (T.shape.used(d)) half[d] = T.nb[d] / 2, ++dims;
   const int children = 1 << dims;
-  for (std::size_t p = 0; p < T.patches.size(); ++p) {
+  for (std::size_t p = p0; p < std::min(p1, T.patches.size()); ++p) {
     const Level& P = T.patches[p];
     Level& Q = C.patches[static_cast<std::size_t>(T.parent[p])];
     const Cell& F = T.corner[p];

@@ -11,14 +11,17 @@
 // interpolated coarse correction and relaxing. Patch ghosts come from neighbouring patches of the
 // same level, from the physical boundary conditions, or by tensor-product quadratic interpolation of
 // the next coarser level (error O(h^3), so the interface cells' truncation error is O(h) and the
-// solution stays second order). Every rank holds all patches and computes them redundantly; the
-// base level's work is split between the ranks (bit-identical to one rank).
+// solution stays second order). Every rank holds all patches; the relaxation, residuals and
+// transfers are split by patch and the base level's work by slabs (bit-identical to one rank).
 #include <mpi.h>
 
+#include <algorithm>
 #include <array>
+#include <initializer_list>
 #include <memory>
 #include <vector>
 
+#include "XCFC/multigrid/cell_share.hpp"
 #include "XCFC/multigrid/multigrid.hpp"
 
 namespace remnant::xcfc {
@@ -74,6 +77,21 @@ inline void for_part_cells(const PartGeometry& g, F&& f) {
       for (int i = 0; i < s.n[0]; ++i) f(q++, static_cast<std::size_t>(g.at(i, j, k)), i, j, k);
 }
 
+// Interior cells [begin, end) of a part (storage order), with the same arguments as for_part_cells:
+// row by row, the ghosted index stepping with i (its stride is 1).
+template <class F>
+inline void for_part_cells(const PartGeometry& g, std::size_t begin, std::size_t end, F&& f) {
+  const GridShape& s = g.shape;
+  const auto n0 = static_cast<std::size_t>(s.n[0]), n1 = static_cast<std::size_t>(s.n[1]);
+  for (std::size_t q = begin; q < end;) {
+    int i = static_cast<int>(q % n0);
+    const int j = static_cast<int>((q / n0) % n1), k = static_cast<int>(q / (n0 * n1));
+    const std::size_t row_end = std::min(end, q + (n0 - static_cast<std::size_t>(i)));
+    auto p = static_cast<std::size_t>(g.at(i, j, k));
+    for (; q < row_end; ++q, ++i, ++p) f(q, p, i, j, k);
+  }
+}
+
 class CompositeMultigrid {
  public:
   // Throws std::invalid_argument for a layout that breaks the rules above.
@@ -94,6 +112,10 @@ class CompositeMultigrid {
   bool covered(int i, std::size_t q) const;
   // A composite field of `value` with every part sized.
   CompositeField field(double value = 0.0) const;
+  // The split of pointwise work over the interior (or ghosted, PartGeometry::at) cells of all parts
+  // between the ranks, and the fields made complete again after it (cell_share.hpp).
+  const CellShare& share(bool ghosted = false) const;
+  void complete(std::initializer_list<CompositeField*> fields, bool ghosted = false) const;
   // Covered cells take the volume-weighted mean of their children (finest level first).
   void fill_covered(CompositeField& f) const;
   // Ghosted copies of the parts (PartGeometry::at) with the ghosts filled from the equation's
@@ -111,5 +133,18 @@ class CompositeMultigrid {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+}  // namespace remnant::xcfc
+
+namespace remnant::xcfc {
+
+// This rank's share (CompositeMultigrid::share) of the interior cells of part n, with the arguments
+// of for_part_cells; counted in the share. The caller completes the fields it wrote.
+template <class F>
+inline void for_share_cells(const CompositeMultigrid& mg, int n, F&& f) {
+  const auto [b, e] = mg.share().range(n);
+  mg.share().count(e - b);
+  for_part_cells(mg.part(n), b, e, f);
+}
 
 }  // namespace remnant::xcfc
