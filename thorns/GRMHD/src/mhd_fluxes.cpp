@@ -110,7 +110,8 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.cell[kRecBPrev][m] *= h[prev];
         }
       }
-      for (int q = 0; q < kNumRecMhd; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
+      for (int q = 0; q < kNumRecMhd; ++q)
+        if (reconstructed_slot<E>(q)) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm);
       set_face_metric(b, trig, s.metric_faces, D, idx, n, L);
 
       Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
