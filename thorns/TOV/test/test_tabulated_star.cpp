@@ -18,13 +18,20 @@
 //   now:    t <= 6: 6.33e-4, 1.86e-4, 5.39e-5 (1.46e-5): orders 1.76, 1.79, 1.88;
 //           t <= 25: 6.51e-4, 1.91e-4, 5.54e-5 (3.1e-5): orders 1.77, 1.78 (0.8 at 1600: a pulse at
 //           t ~ 9); t <= 150 at 200, 400: 1.45e-3, 5.5e-4.
-// Not converging yet (not asserted): from t ~ 27 a step from the crust (rho ~ 3e-4 .. 1e-5) focused at
-// the centre: t <= 60: 1.45e-3, 5.5e-4, 8.1e-4 (4.6e-3 at 1600). It comes from the table's T_min floor:
-// the star sits on it, so p(rho, eps) has a kink at the star's own state (rule 8 clamps eps below
-// eps(T_min), p stays cold there and rises with eps above it), which rectifies the crust's first-order
-// oscillations (at its kinks) into a mean pressure change. A star at 0.5 MeV (off the floor) converges
-// at 800 cells (t <= 60: 1.4e-3, 4.7e-4, 1.2e-4); keeping tau where rule 8 clamps (no energy added)
-// does not help (6.5e-4 at 800). Bounds: measured orders less 0.3; amplitudes +50 %.
+// Not converging yet (not asserted), t <= 60 at 200, 400, 800, 1600 cells: Cowling 1.45e-3, 5.5e-4,
+// 8.1e-4, 4.6e-3; xCFC 1.43e-3, 6.5e-4, 8.6e-4, 5.4e-3. Two causes, both from t ~ 27 on:
+//  - the table's T_min floor: the star sits on it, so p(rho, eps) has a kink at the star's own state
+//    (rule 8 raises eps below eps(T_min), p stays cold there and rises with eps above it), which
+//    rectifies the crust's oscillations (first order at its kinks) into a mean pressure step that
+//    focuses at the centre. Evidence: the same star at 0.5 MeV (off the floor) converges to 800 cells
+//    (1.43e-3, 4.66e-4, 1.18e-4: orders 1.6, 2.0); keeping tau where rule 8 clamps (no energy added)
+//    does not help (6.5e-4 at 800); extrapolating the table one T interval below T_min (in ln T, as
+//    its interpolant) halves it (3.9e-4 at 800). Candidate fix (not done): an EOS continued far enough
+//    below T_min that a cold star's cells never reach the floor.
+//  - at 1600 cells also off the floor (3.0e-4): a grid-scale wave packet that arrives later than at
+//    800 cells (t ~ 30 vs 28.5), presumably from the first-order truncation error left at the kinks
+//    (point values of the kinked e = rho (1 + eps) in the sources, PPM across kinks of rho).
+// Bounds: measured orders less about 0.3; amplitudes +50 %.
 #include <gtest/gtest.h>
 
 #include <cmath>
