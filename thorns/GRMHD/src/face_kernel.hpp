@@ -14,8 +14,8 @@ namespace remnant::grmhd {
 // The side states' thermodynamics as work arrays (side 0: left, 1: right).
 enum FaceWork : int { kWorkPress = 0, kWorkH = 2, kWorkCs2 = 4, kWorkYe = 6 };
 
-// Non-ideal-gas EOS: press, h, cs2 and the clamped Ye of both sides of every face, one table call
-// each (complete_face_thermo).
+// Non-ideal-gas EOS: press (the reconstructed one), h, cs2 and the clamped Ye of both sides of every
+// face, one table call each (complete_face_thermo).
 template <class E, int NumRec, int NumFlux>
 inline void face_thermo_line(const E& eos, int n, LineScratch<NumRec, NumFlux>& L) {
   for (int side = 0; side < 2; ++side) {
@@ -24,7 +24,7 @@ inline void face_thermo_line(const E& eos, int n, LineScratch<NumRec, NumFlux>& 
       FluidState s;
       s.rho = st[kRecRho][f];
       s.ye = st[kRecYe][f];
-      complete_face_thermo(eos, s, st[kRecThermal][f]);
+      complete_face_thermo(eos, s, st[kRecThermal][f], st[kRecPress][f]);
       L.work[kWorkPress + side][f] = s.press;
       L.work[kWorkH + side][f] = s.h;
       L.work[kWorkCs2 + side][f] = s.cs2;

@@ -16,9 +16,15 @@ namespace remnant::grmhd {
 enum class MetricFaceInterpolation { linear, cubic };
 
 // The reconstructed variables every sweep shares, in this order; the MHD sweep appends its two
-// transverse field components.
-enum LineVariable : int { kRecRho = 0, kRecWv1 = 1, kRecThermal = 4, kRecYe = 5 };
-inline constexpr int kNumRecHydro = 6;
+// transverse field components. kRecPress: the pressure beside the temperature of a non-ideal-gas EOS
+// (face_thermo.hpp); the ideal gas's thermal variable is the pressure, so it skips that slot
+// (reconstructed_slot).
+enum LineVariable : int { kRecRho = 0, kRecWv1 = 1, kRecThermal = 4, kRecYe = 5, kRecPress = 6 };
+inline constexpr int kNumRecHydro = 7;
+template <class E>
+inline constexpr bool reconstructed_slot(int q) {
+  return !(reconstructs_pressure<E> && q == kRecPress);
+}
 
 // The metric at the faces of a line (f = 0..n): what the face states and fluxes need of it.
 struct FaceMetricLine {
@@ -107,6 +113,7 @@ struct LineSources {
   const double* vel[3];
   const double* thermal;  // p (ideal gas) or T (face_thermo.hpp)
   const double* ye;
+  const double* press;
   const double* met[Metric::ncomp];
   template <class E>
   static LineSources of(const Field* prim, const Field* metric) {
@@ -118,14 +125,15 @@ struct LineSources {
     s.vel[2] = prim[Prim::idx::vel3].origin;
     s.thermal = (reconstructs_pressure<E> ? prim[Prim::idx::press] : prim[Prim::idx::temperature]).origin;
     s.ye = prim[Prim::idx::Ye].origin;
+    s.press = prim[Prim::idx::press].origin;
     for (int c = 0; c < Metric::ncomp; ++c) s.met[c] = metric[c].origin;
     return s;
   }
 };
 
 // Copies the line at offset `base` (stride `stride`, n cells and ng ghosts each side) into L:
-// rho, W v^1..3, thermal, Ye into cell[0..5] (set_face_metric reads the metric in place); the NumRec - 6 fields of `extra`
-// (the MHD sweep's transverse B; nullptr for the hydro sweep) into cell[6..], read at the same points.
+// rho, W v^1..3, thermal, Ye, p into cell[0..6] (set_face_metric reads the metric in place); the NumRec - 7
+// fields of `extra` (the MHD sweep's transverse B; nullptr for the hydro sweep) into cell[7..], read at the same points.
 template <int NumRec, int NumFlux>
 inline void gather_line(const LineSources& src, const double* const* extra, std::ptrdiff_t base, std::ptrdiff_t stride,
                         int n, int ng, LineScratch<NumRec, NumFlux>& L) {
@@ -138,6 +146,7 @@ inline void gather_line(const LineSources& src, const double* const* extra, std:
   const double* pv2 = src.vel[2] + base;
   const double* pth = src.thermal + base;
   const double* pye = src.ye + base;
+  const double* ppr = src.press + base;
   for (int m = -ng; m < n + ng; ++m) {
     const std::ptrdiff_t o = m * stride;
     const double W = pw[o];
@@ -147,6 +156,7 @@ inline void gather_line(const LineSources& src, const double* const* extra, std:
     L.cell[3][m] = W * pv2[o];
     L.cell[4][m] = pth[o];
     L.cell[5][m] = pye[o];
+    L.cell[6][m] = ppr[o];
   }
   for (int e = 0; e < NumExtra; ++e) {
     const double* px = extra[e] + base;

@@ -1,5 +1,5 @@
 // GRMHD right-hand side. Pass 1: for each direction, lines of cells are gathered into contiguous
-// buffers, reconstructed (rho, W v^i, p or T, Ye), completed by the EOS and turned into HLL flux
+// buffers, reconstructed (rho, W v^i, p or T and p, Ye), completed by the EOS and turned into HLL flux
 // densities psi^6 F at the faces. Pass 2 (after the Grid's flux correction): flux divergence with
 // exact face areas and volumes, plus sources, cell by cell with i fastest.
 #include "rhs.hpp"
@@ -49,7 +49,8 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
       const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
       const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
       gather_line(src, nullptr, base, stride, n, ng, L);
-      for (int q = 0; q < kNumRecHydro; ++q) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
+      for (int q = 0; q < kNumRecHydro; ++q)
+        if (reconstructed_slot<E>(q)) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
       if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
       else set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, stride, L);
       // Straight into the flux groups (strided across x).

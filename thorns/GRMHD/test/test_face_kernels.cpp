@@ -45,6 +45,7 @@ void fill(L& line, int d, std::mt19937_64& rng, std::array<double, kFaces>& psi,
       for (int c = 0; c < 3; ++c) side[kRecWv1 + c][f] = f == 0 ? 0.0 : 2.0 * (u(rng) - 0.5);
       side[kRecThermal][f] = f == 0 ? 0.0 : f == 1 ? -1e-3 : u(rng);
       side[kRecYe][f] = 0.1 + 0.3 * u(rng);
+      side[kRecPress][f] = f == 1 ? -1e-3 : u(rng);
     }
   }
 }
@@ -57,7 +58,7 @@ FluidState reference_state(const E& eos, const PointMetric& pm, double* const* s
   s.rho = side[kRecRho][f];
   s.ye = side[kRecYe][f];
   set_velocity_from_wv(s, pm, side[kRecWv1][f], side[kRecWv1 + 1][f], side[kRecWv1 + 2][f]);
-  complete_face_thermo(eos, s, side[kRecThermal][f]);
+  complete_face_thermo(eos, s, side[kRecThermal][f], side[kRecPress][f]);
   return s;
 }
 

@@ -2,19 +2,38 @@
 // beta-equilibrium slice of the reduced SFHo table (TOV::eos_slice = tabulated_beta, rho_c = 1.4e-3,
 // M = 1.54 baryonic), evolved with the same table (recovery through the eps -> T inversion) in
 // Cowling and with xCFC solved every step, 1D spherical to r = 16.
-// The star's initial data are consistent with the evolution's table interpolation (table_slice.cpp):
-// Ye, eps and p of every cell are the table's own values at (rho, T_min), and H(rho) is integrated at
-// third order between the table's density nodes (where the interpolated table has kinks). Before,
-// TOV resampled the slice on 800 densities: a pulse from that interpolation error reached the
-// centre at t ~ 9.6 with an amplitude that grew with resolution (max |rho_c/rho_c0 - 1| over
-// t <= 20: 9.9e-4, 1.3e-3, 3.0e-3 at 200, 400, 800 cells; order 0.9 over t <= 6).
-// Measured now (Cowling; xCFC within 3 %):
-//   t <= 6 (the response to the initial truncation error): 6.14e-4, 1.82e-4, 5.27e-5: order 1.76, 1.78;
-//   t <= 20 (with the first signal from the crust, t ~ 8.5): 6.17e-4, 2.21e-4, 1.03e-4: order 1.5, 1.1;
-//   t <= 150 at 200, 400 cells: 2.33e-3, 4.6e-4. Not a convergence claim: from t ~ 27 a
-//   disturbance from the crust (rho ~ 1e-4 .. 1e-6, r ~ 6) reaches the centre, and it grows with
-//   resolution (4.7e-4 at 800, 3.9e-3 at 1600 cells); the kinks of the trilinear table at its
-//   nodes also remain (see the issue). Bounds: measured orders less 0.2; amplitudes +50 %.
+// The table is interpolated linearly in (ln rho, ln T, Ye), so the star's rho(r) and Ye(r) have kinks
+// where rho crosses a density node and where beta-equilibrium Ye crosses a Ye node (38 in the star);
+// p(r) is smooth there. Two things made those kinks push on the star, each with an O(1) force in the
+// kink's cells that did not shrink with the grid (first-step |dS/dt|/D at the node rho = 5.9e-4:
+// 5.3e-4, 3.7e-4, 2.9e-4 at 400, 800, 1600 cells):
+//  - the initial data: ln rho(H) was a monotone spline between density nodes, whose end derivatives
+//    are first order and which smoothed the Ye-node kinks: dp/dH = e + p was off by 0.3 % at nodes,
+//    16 % at Ye crossings (ColdSliceIsBalancedAtTheTableKinks: 5.8e-8 now, table_slice.hpp);
+//  - the face pressure: p(rho_face, T_face, Ye_face) from kinked rho and Ye is off by O(dx) at a kink;
+//    GRMHD now reconstructs p for a table (face_thermo.hpp). Each fix alone leaves the O(1) force:
+//    with the balanced slice and p(rho_face, T_face, Ye_face), t <= 25 gives 6.17e-4, 2.20e-4, 9.8e-5
+//    (orders 1.49, 1.16), which SFHoCowling refuses; the slice alone is checked by
+//    ColdSliceIsBalancedAtTheTableKinks.
+// max |rho_c/rho_c0 - 1| at 200, 400, 800 (1600) cells, Cowling (xCFC within 5 %):
+//   before: t <= 6: 6.14e-4, 1.82e-4, 5.27e-5; t <= 25: 6.17e-4, 2.21e-4, 1.03e-4 (4.6e-5; orders 1.5,
+//     1.1, 1.2: pulses from the nodes); t <= 60: 2.33e-3, 4.59e-4, 4.84e-4, 3.92e-3.
+//   now:    t <= 6: 6.33e-4, 1.86e-4, 5.39e-5 (1.46e-5): orders 1.76, 1.79, 1.88;
+//           t <= 25: 6.51e-4, 1.91e-4, 5.54e-5 (3.1e-5): orders 1.77, 1.78 (0.8 at 1600: a pulse at
+//           t ~ 9); t <= 150 at 200, 400: 1.45e-3, 5.5e-4.
+// Not converging yet (not asserted), t <= 60 at 200, 400, 800, 1600 cells: Cowling 1.45e-3, 5.5e-4,
+// 8.1e-4, 4.6e-3; xCFC 1.43e-3, 6.5e-4, 8.6e-4, 5.4e-3: from t ~ 27 a step from the crust (r ~ 5 .. 6)
+// focused at the centre. What is known (Cowling, t <= 60, 400 / 800 / 1600 cells):
+//  - it goes with the star sitting on the table's T_min: the same star at 0.5 MeV (slice at 5 T_min)
+//    converges to 800 cells (4.66e-4, 1.18e-4: order 2.0), though not at 1600 (3.0e-4: a grid-scale
+//    packet that arrives later than at 800, t ~ 30 vs 28.5);
+//  - it is not the energy that rule 8 adds: keeping tau where eps is raised to eps(T_min) leaves
+//    6.5e-4 at 800; nor the clamp's kink in p(eps) alone: continuing the table linearly in ln T one
+//    interval below T_min gives 3.9e-4, ten intervals 4.7e-4 at 800 (and breaks 1600);
+//  - candidates left: where eps(T) of the table is not monotonic near T_min in the crust, the
+//    temperature reconstruction clamped at T_min at faces, and the first-order truncation error left at
+//    the kinks (point values of the kinked e = rho (1 + eps) in the sources, PPM across kinks of rho).
+// Bounds: measured orders less about 0.3; amplitudes +50 %.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -26,6 +45,8 @@
 #include <vector>
 
 #include "Analysis/star_diagnostics.hpp"
+#include "EOS/readers.hpp"
+#include "TOV/table_slice.hpp"
 #include "remnant/driver.hpp"
 #include "remnant_test/shared_tables.hpp"
 
@@ -36,7 +57,7 @@ namespace {
 using namespace remnant;
 
 struct Drift {
-  double rho_c = 0, rho_c_6 = 0, rho_c_20 = 0, rest_mass = 0, budget = 0;  // max |rho_c/rho_c0 - 1| (t <= 6, 20)
+  double rho_c = 0, rho_c_6 = 0, rho_c_25 = 0, rest_mass = 0, budget = 0;  // max |rho_c/rho_c0 - 1| (t <= 6, 25)
 };
 
 Drift run(const char* parfile, int n, double final_time = 150) {
@@ -63,7 +84,7 @@ Drift run(const char* parfile, int n, double final_time = 150) {
     const double drift = std::abs(r.rho_c / rows.front().rho_c - 1);
     d.rho_c = std::max(d.rho_c, drift);
     if (r.time <= 6) d.rho_c_6 = std::max(d.rho_c_6, drift);
-    if (r.time <= 20) d.rho_c_20 = std::max(d.rho_c_20, drift);
+    if (r.time <= 25) d.rho_c_25 = std::max(d.rho_c_25, drift);
     d.budget = std::max(d.budget, std::abs(r.mass_budget / rows.front().mass_budget - 1));
   }
   d.rest_mass = rows.back().rest_mass / rows.front().rest_mass - 1;
@@ -74,22 +95,22 @@ Drift run(const char* parfile, int n, double final_time = 150) {
 double order(double coarse, double fine) { return std::log2(coarse / fine); }
 
 void expect_star_holds(const char* parfile, const char* name, double max_drift_200, double max_drift_400) {
-  const Drift a = run(parfile, 200), b = run(parfile, 400), c = run(parfile, 800, 20);
+  const Drift a = run(parfile, 200), b = run(parfile, 400), c = run(parfile, 800, 25);
   std::printf("SFHo static star, %s: max|rho_c/rho_c0 - 1| = %.3e %.3e at 200, 400 cells (t <= 150); "
-              "t <= 6: %.3e %.3e %.3e (orders %.2f %.2f); t <= 20: %.3e %.3e %.3e (orders %.2f %.2f) at 200, 400, "
+              "t <= 6: %.3e %.3e %.3e (orders %.2f %.2f); t <= 25: %.3e %.3e %.3e (orders %.2f %.2f) at 200, 400, "
               "800; rest mass %.1e %.1e; budget %.1e %.1e\n",
               name, a.rho_c, b.rho_c, a.rho_c_6, b.rho_c_6, c.rho_c_6, order(a.rho_c_6, b.rho_c_6),
-              order(b.rho_c_6, c.rho_c_6), a.rho_c_20, b.rho_c_20, c.rho_c_20, order(a.rho_c_20, b.rho_c_20),
-              order(b.rho_c_20, c.rho_c_20), a.rest_mass, b.rest_mass, a.budget, b.budget);
-  EXPECT_GT(order(a.rho_c_6, b.rho_c_6), 1.55) << name;
-  EXPECT_GT(order(b.rho_c_6, c.rho_c_6), 1.55) << name << ": the initial data must converge with the grid";
-  EXPECT_GT(order(a.rho_c_20, b.rho_c_20), 1.3) << name;
-  EXPECT_GT(order(b.rho_c_20, c.rho_c_20), 0.9) << name;
-  EXPECT_LT(c.rho_c_20, 1.6e-4) << name;
+              order(b.rho_c_6, c.rho_c_6), a.rho_c_25, b.rho_c_25, c.rho_c_25, order(a.rho_c_25, b.rho_c_25),
+              order(b.rho_c_25, c.rho_c_25), a.rest_mass, b.rest_mass, a.budget, b.budget);
+  EXPECT_GT(order(a.rho_c_6, b.rho_c_6), 1.45) << name;
+  EXPECT_GT(order(b.rho_c_6, c.rho_c_6), 1.45) << name << ": the initial data must converge with the grid";
+  EXPECT_GT(order(a.rho_c_25, b.rho_c_25), 1.4) << name;
+  EXPECT_GT(order(b.rho_c_25, c.rho_c_25), 1.45) << name << ": no pulses from the table's kinks";
+  EXPECT_LT(c.rho_c_25, 8.5e-5) << name;
   EXPECT_LT(a.rho_c, max_drift_200) << name;
   EXPECT_LT(b.rho_c, max_drift_400) << name;
   for (const Drift& d : {a, b}) {
-    EXPECT_LT(std::abs(d.rest_mass), 2e-7) << name;
+    EXPECT_LT(std::abs(d.rest_mass), 2e-8) << name;
     EXPECT_LT(d.budget, 1e-12) << name;
   }
 }
@@ -98,10 +119,45 @@ void expect_star_holds(const char* parfile, const char* name, double max_drift_2
 
 TEST(TabulatedStaticStar, SFHoCowling) {
   REQUIRE_TABLE(remnant::test::shared_eos("SFHo_reduced_39r_39t_20y.h5"));
-  expect_star_holds("bu0_cow.yaml", "Cowling", 3.5e-3, 7e-4);
+  expect_star_holds("bu0_cow.yaml", "Cowling", 2.2e-3, 1e-3);
 }
 
 TEST(TabulatedStaticStar, SFHoWithXCFC) {
   REQUIRE_TABLE(remnant::test::shared_eos("SFHo_reduced_39r_39t_20y.h5"));
-  expect_star_holds("bu0_dyn.yaml", "xCFC every step", 3.5e-3, 7e-4);
+  expect_star_holds("bu0_dyn.yaml", "xCFC every step", 2.2e-3, 1e-3);
+}
+
+// The cold slice is in hydrostatic balance with the table the evolution interpolates: dp/dH = e + p on
+// both sides of every kink of the interpolated table inside the star (its density nodes and the
+// densities where beta-equilibrium Ye crosses a Ye node). A monotone spline of ln rho(H) over the
+// samples between density nodes was off there by up to 0.3 % (nodes) and 16 % (Ye crossings inside its
+// pieces) within a sample interval: a pressure-gradient error that the evolution felt as a pulse from
+// every node (measured now: 5.8e-8 worst, round-off of the differences included; bound 1e-6).
+TEST(TabulatedStaticStar, ColdSliceIsBalancedAtTheTableKinks) {
+  const std::string path = remnant::test::shared_eos("SFHo_reduced_39r_39t_20y.h5");
+  REQUIRE_TABLE(path);
+  const remnant::eos::Tabulated<> table(remnant::eos::load_table(path));
+  const auto slice = remnant::tov::cold_beta_slice(table);
+  const double dx = table.table().lrho.dx;
+  int kinks = 0, crossings = 0;
+  double worst = 0;
+  for (double x : remnant::tov::slice_kinks(table)) {
+    if (x < std::log(1e-10) || x > std::log(1.4e-3)) continue;  // the star, atmosphere excluded
+    ++kinks;
+    const double node = (x - table.table().lrho.x0) / dx;
+    if (std::abs(node - std::round(node)) > 1e-6) ++crossings;
+    for (double side : {-1.0, 1.0})
+      for (double offset : {1e-4, 1e-3, 1e-2}) {
+        const double xc = x + side * offset * dx, d = 1e-3 * offset * dx;
+        const auto lo = remnant::tov::cold_beta_state(table, std::exp(xc - d));
+        const auto hi = remnant::tov::cold_beta_state(table, std::exp(xc + d));
+        const auto c = remnant::tov::cold_beta_state(table, std::exp(xc));
+        const double dp_dH = (hi.press - lo.press) / (slice->log_enthalpy(hi.rho) - slice->log_enthalpy(lo.rho));
+        worst = std::max(worst, std::abs(dp_dH / (c.rho * (1 + c.eps) + c.press) - 1));
+      }
+  }
+  std::printf("cold SFHo slice: %d kinks in the star (%d Ye-node crossings), worst |dp/dH / (e + p) - 1| = %.2e\n",
+              kinks, crossings, worst);
+  EXPECT_GT(crossings, 5);
+  EXPECT_LT(worst, 1e-6);
 }

@@ -1,8 +1,12 @@
 #pragma once
-// Which thermodynamic variable is reconstructed, and the EOS call that completes a face state.
+// Which thermodynamic variables are reconstructed, and the EOS call that completes a face state.
 // Ideal gas: the pressure (continuous across contact discontinuities; eps, h, cs2 follow in closed
-// form, no EOS inversion). Every other EOS: the temperature, then one EOS call (rho, T, Ye) — no
-// eps -> T inversion at faces.
+// form, no EOS inversion). Every other EOS: the temperature and the pressure; one EOS call
+// (rho, T, Ye) gives eps and cs2 (no eps -> T inversion at faces), the pressure is the reconstructed
+// one. p(rho_face, T, Ye_face) would not do: a table is interpolated linearly in ln rho and Ye, so a
+// star's rho(r) and Ye(r) have kinks at the table's nodes while p(r) stays smooth (hydrostatic), and
+// the kinked face values put an O(dx) error into p there: an O(1) force in the node's cells that does
+// not converge (issue 20: the SFHo star's drift grew with resolution).
 #include <algorithm>
 #include <type_traits>
 
@@ -25,12 +29,13 @@ inline double thermal_variable(double press, double temperature) {
   else return temperature;
 }
 
-// Fills press, eps, h, cs2 of s from its rho, ye and the reconstructed thermal variable. The
-// error policy after reconstruction: T and Ye are clamped into the EOS range (rules 4, 6, 7), a
-// negative pressure becomes zero.
+// Fills press, eps, h, cs2 of s from its rho, ye, the reconstructed thermal variable and (not ideal
+// gas) the reconstructed pressure. The error policy after reconstruction: T and Ye are clamped into
+// the EOS range (rules 4, 6, 7), a negative pressure becomes zero.
 template <class E>
-inline void complete_face_thermo(const E& eos, FluidState& s, double thermal) {
+inline void complete_face_thermo(const E& eos, FluidState& s, double thermal, double press) {
   if constexpr (reconstructs_pressure<E>) {
+    (void)press;  // the thermal variable is the pressure
     const double g = eos.gamma();
     const double p = std::max(thermal, 0.0);
     const double p_over_rho = p / s.rho;
@@ -43,9 +48,9 @@ inline void complete_face_thermo(const E& eos, FluidState& s, double thermal) {
     const double T = std::clamp(thermal, b.T_min, b.T_max);
     s.ye = std::clamp(s.ye, b.ye_min, b.ye_max);
     const auto th = eos.thermo(s.rho, T, s.ye);
-    s.press = th.press;
+    s.press = std::max(press, 0.0);
     s.eps = th.eps;
-    s.h = th.h;
+    s.h = 1.0 + th.eps + s.press / s.rho;
     s.cs2 = th.cs2;
   }
 }
