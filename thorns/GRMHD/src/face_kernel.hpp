@@ -60,7 +60,7 @@ template <int Side, class E, int NumRec, int NumFlux>
   set_velocity_from_wv(s, m, st[kRecWv1][f], st[kRecWv1 + 1][f], st[kRecWv1 + 2][f]);
   if constexpr (reconstructs_pressure<E>) {
     s.ye = st[kRecYe][f];
-    complete_face_thermo(eos, s, st[kRecThermal][f]);
+    complete_face_thermo(eos, s, st[kRecThermal][f], st[kRecThermal][f]);  // the ideal gas's thermal variable is p (kRecPress is not reconstructed)
   } else {
     s.press = L.work[kWorkPress + Side][f];
     s.h = L.work[kWorkH + Side][f];
