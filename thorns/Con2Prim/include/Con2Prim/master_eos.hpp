@@ -105,6 +105,7 @@ inline void copy_root_state(const MasterEval& root, RootSolution& out) {
   out.rho = root.rho0;
   out.eps = root.eps;
   out.T = root.temperature();
+  out.lnT = root.has_lnT && !(root.T > 0) ? root.lnT : NAN;
   out.inversion_flags = root.inv_flags;
 }
 

@@ -52,6 +52,19 @@ class Tabulated {
     o.h = 1 + o.eps + o.press / rho;
     return o;
   }
+  // p and cs2 of thermo() where ln T is already known (the primitive recovery's root): the same
+  // interpolant without the ln T -> T -> ln T round trip and without the other fields.
+  PressCs2 press_cs2(double rho, double lnT, double ye) const {
+    std::size_t ir, it, iy;
+    Stencil s;
+    locate(t_->lrho, std::log(rho), ir, s.fr);
+    locate(t_->lT, lnT, it, s.ft);
+    locate(t_->ye, ye, iy, s.fy);
+    s.base = ((iy * t_->lT.n + it) * t_->lrho.n + ir) * kThermoStride;
+    s.sr = sr_, s.st = st_, s.sy = sy_;
+    counter_.add();
+    return {std::exp(interp(s, kLogP)) - t_->p_shift, interp(s, kCs2)};
+  }
   double press(double rho, double T, double ye) const {
     counter_.add();
     return std::exp(interp(stencil(rho, T, ye), kLogP)) - t_->p_shift;
