@@ -23,6 +23,8 @@
 
 namespace remnant::eos {
 
+// The search is forced inline (gnu::always_inline) into the master function, which calls it once per
+// evaluation: as separate calls the Result and Column copies cost more than the search itself.
 template <class Tab>
 class TabulatedAtYe {
  public:
@@ -53,7 +55,7 @@ class TabulatedAtYe {
   //              selects the root where eps is not monotonic in T (monotone_cell 0).
   //   lnT_hint:  where the search starts in a monotone cell (not finite: none); the result there is
   //              unique, so the hint changes only the cost.
-  Result invert(double rho, double eps, double lnT_guess, double lnT_hint) const {
+  [[gnu::always_inline]] Result invert(double rho, double eps, double lnT_guess, double lnT_hint) const {
     Result r;
     r.eps = eps;
     const Bounds& b = t_.bounds;
@@ -79,7 +81,7 @@ class TabulatedAtYe {
     const double* p;
     std::size_t sr, sy, st;
     double w00, w01, w10, w11;  // corner weights (1-fy)(1-fr), (1-fy)fr, fy(1-fr), fy fr
-    Node node(int j) const {
+    [[gnu::always_inline]] Node node(int j) const {
       static_assert(kLogEps == kLogP + 1, "ln p and ln eps adjacent in the record");
       const double* q = p + j * st + kLogP;
       return {w00 * q[0] + w01 * q[sr] + w10 * q[sy] + w11 * q[sy + sr],
@@ -98,7 +100,7 @@ class TabulatedAtYe {
   // the hinted interval, hunt outwards (steps 1, 2, 4, ...) to a bracket, then bisect; the end nodes
   // are read only when the hunt reaches them (rules 8/9: target <= E(0), target >= E(last)).
   // Every node read gives ln p too, so the bracketing interval's p costs no further read.
-  Result invert_monotone(const Column& c, double target, int j, Result& r) const {
+  [[gnu::always_inline]] Result invert_monotone(const Column& c, double target, int j, Result& r) const {
     const int last = t_.lT.n - 1;
     int l = 0, h = last;
     Node nl{}, nh{};
@@ -174,7 +176,7 @@ class TabulatedAtYe {
   }
 
   // Linear in ln T on [node j, node j+1] (as Tabulated's exact inversion), p with the same fraction.
-  Result interior(int j, const Node& n0, const Node& n1, double target, Result& r) const {
+  [[gnu::always_inline]] Result interior(int j, const Node& n0, const Node& n1, double target, Result& r) const {
     const Axis& a = t_.lT;
     const double f = n1.le != n0.le ? (target - n0.le) / (n1.le - n0.le) : 0.0;
     r.lnT = a.node(j) + a.dx * f;  // T = exp(lnT) is left to the caller (needed at the root only)
