@@ -73,7 +73,7 @@ RootStats brent_root(F&& eval, Eval a, Eval b, double rel_tol, int max_iter, Eva
       else p = -p;
       if (2 * p < std::min(3 * m * q - std::abs(tol * q), std::abs(e * q))) {
         const double step = p / q;
-        if (std::abs(step) <= early_stop * tol && std::abs(step) <= 1e-3 * std::abs(d)) {
+        if (early_stop > 0 && std::abs(step) <= early_stop * tol && std::abs(step) <= 1e-3 * std::abs(d)) {
           st.iterations = it;
           st.converged = st.early = true;
           best = b, other = c;
