@@ -134,6 +134,7 @@ class KastaunSolver {
     if (s.secant_polish) root = secant_polish(root, far);
     out.iterations = st.iterations;
     out.converged = st.converged;
+    out.early_stop = st.early;
     out.evaluations = thermo_.evaluations();
     // (v) velocity from the root, v^i = mu chi (r^i + mu (r.Bc) Bc^i), at the speed of its W.
     const double mu = root.x, chi = 1 / (1 + mu * Bc2_);
@@ -142,7 +143,10 @@ class KastaunSolver {
     return out;
   }
 
-  RootSolution solve(const Settings& s) {
+  // early_stop (tables): Brent may stop one evaluation before closing its bracket (root_finding.hpp);
+  // RootSolution::early_stop says it did, and the pipeline solves again without it where the result
+  // does not reproduce the conserved variables to the root tolerance.
+  RootSolution solve(const Settings& s, bool early_stop = true) {
     RootSolution out;
     Eval lo, hi;
     // (iv) Brent on the bracket (narrowed for tables, where an evaluation costs a table search;
@@ -153,7 +157,8 @@ class KastaunSolver {
       return out;
     }
     Eval root, far;
-    RootStats st = brent_root(*this, lo, hi, s.tolerance, s.max_iterations, root, far);
+    RootStats st = brent_root(*this, lo, hi, s.tolerance, s.max_iterations, root, far,
+                              kTabulated && early_stop ? kEarlyStop : 0.0);
     if (root.inv_flags & eos::kInvBelowEpsLow) {
       // Raising eps to eps_low(rho) (rule 8) can add a root beside the physical one where the table's
       // cold eps grows fast with rho (LS220 above ~5e15 g/cm^3): prefer an unclamped root below it.
@@ -162,6 +167,7 @@ class KastaunSolver {
       if (unclamped_root_below(lo.x == 0 ? lo : (*this)(0.0), root.x, s, st2, root2, far2)) {
         root = root2, far = far2;
         st.converged = st2.converged;
+        st.early = st2.early;
         st.iterations += st2.iterations;
       }
     }
@@ -200,6 +206,8 @@ class KastaunSolver {
 
  private:
   static constexpr bool kTabulated = eos::is_tabulated_v<E>;
+  // Brent's early stop: the predicted step at most 1/16 of the tolerance.
+  static constexpr double kEarlyStop = 1.0 / 16;
   MasterEos<E> thermo_;
   double D_;
   double q_ = 0, r2_ = 0, Bc2_ = 0, rB_ = 0, rperp2_Bc2_ = 0, h_min_ = 1, v0sq_ = 0, one_minus_v0sq_ = 1;

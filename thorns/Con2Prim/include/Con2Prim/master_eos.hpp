@@ -28,7 +28,7 @@ class MasterEos {
     double rho, press;  // rho clamped to the table
   };
   // Fills e.W, e.rho0 (unclamped D/W), e.eps, e.T and e.inv_flags; counts one evaluation.
-  Thermo evaluate(double W, double rho0, double eps0, MasterEval& e) {
+  [[gnu::always_inline]] Thermo evaluate(double W, double rho0, double eps0, MasterEval& e) {
     const double rho = std::clamp(rho0, b_.rho_min, b_.rho_max);
     if constexpr (kSliced) {
       if (method_ == eos::InversionMethod::exact) {
@@ -105,6 +105,7 @@ inline void copy_root_state(const MasterEval& root, RootSolution& out) {
   out.rho = root.rho0;
   out.eps = root.eps;
   out.T = root.temperature();
+  out.lnT = root.has_lnT && !(root.T > 0) ? root.lnT : NAN;
   out.inversion_flags = root.inv_flags;
 }
 

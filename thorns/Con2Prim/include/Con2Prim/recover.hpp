@@ -52,8 +52,9 @@ bool acausal_at(const E& eos, const Primitives& p) {
 // One candidate root carried through steps (v)-(vi).
 struct Candidate {
   Primitives prim;
+  Conserved cons;  // prim_to_cons(prim) where the residual was computed (has_cons)
   std::uint32_t rules = 0;
-  bool atmosphere = false, finite = true;
+  bool atmosphere = false, finite = true, has_cons = false;
   double residual = INFINITY;
   bool clean() const { return !atmosphere && finite && !(rules & kRulesMovingState); }
 };
@@ -74,19 +75,38 @@ Candidate complete(const E& eos, const Settings& s, const atmosphere::Atmosphere
     c.atmosphere = true, c.rules = rules, c.prim = prim;
     return c;
   }
-  const double rho_recovered = prim.rho;
+  const double rho_recovered = prim.rho, T_recovered = prim.T;
   rules |= apply_error_policy(eos, s.policy, prim, ThermoInput::consistent);
-  const eos::Thermo th = eos.thermo(prim.rho, prim.T, prim.ye);
-  prim.press = th.press;
-  prim.cs2 = th.cs2;
-  if (prim.rho != rho_recovered) prim.eps = th.eps;  // rule 10 moved rho: eps follows (rho, T, Ye)
+  if constexpr (eos::is_tabulated_v<E>) {
+    // The root's (rho, T) kept by the policy: p and cs2 at its ln T (no ln T -> T -> ln T round trip,
+    // no eps or entropy, which are not needed).
+    if (prim.rho == rho_recovered && prim.T == T_recovered && std::isfinite(sol.lnT)) {
+      const eos::PressCs2 pc = eos.press_cs2(prim.rho, sol.lnT, prim.ye);
+      prim.press = pc.press;
+      prim.cs2 = pc.cs2;
+    } else {
+      const eos::Thermo th = eos.thermo(prim.rho, prim.T, prim.ye);
+      prim.press = th.press;
+      prim.cs2 = th.cs2;
+      if (prim.rho != rho_recovered) prim.eps = th.eps;  // rule 10 moved rho: eps follows (rho, T, Ye)
+    }
+  } else {
+    const eos::Thermo th = eos.thermo(prim.rho, prim.T, prim.ye);
+    prim.press = th.press;
+    prim.cs2 = th.cs2;
+    if (prim.rho != rho_recovered) prim.eps = th.eps;  // rule 10 moved rho: eps follows (rho, T, Ye)
+  }
   c.prim = prim;
   c.rules = rules;
   c.finite = finite(prim);
   // Barotropic EOS: the system is over-determined (eps follows rho, tau enters the master function
   // but cannot be matched), so there is nothing to accept or reject: residual 0.
   if constexpr (E::has_temperature)
-    if (c.finite) c.residual = conserved_residual(prim_to_cons(prim, g), input, g);
+    if (c.finite) {
+      c.cons = prim_to_cons(prim, g);
+      c.has_cons = true;
+      c.residual = conserved_residual(c.cons, input, g);
+    }
   if constexpr (!E::has_temperature) c.residual = 0;
   return c;
 }
@@ -99,9 +119,10 @@ int scan(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, 
 }
 
 template <class E>
-RootSolution solve_master(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye) {
+RootSolution solve_master(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye,
+                          bool early_stop = true) {
   if (s.method == Method::palenzuela) return PalenzuelaSolver<E>(eos, s, g, c, ye).solve(s);
-  return KastaunSolver<E>(eos, s, g, c, ye).solve(s);
+  return KastaunSolver<E>(eos, s, g, c, ye).solve(s, early_stop);
 }
 
 }  // namespace detail
@@ -112,8 +133,8 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   const auto calls0 = eos.counter().count();
   const Conserved input = cons;
   Report rep;
-  auto finish = [&] {
-    cons = prim_to_cons(prim, g);
+  auto finish = [&](const Conserved* known = nullptr) {
+    cons = known ? *known : prim_to_cons(prim, g);
     rep.eos_calls = eos.counter().count() - calls0;
     return rep;
   };
@@ -138,7 +159,7 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   if (prim.ye > b.ye_max) prim.ye = b.ye_max, ye_rules |= kRuleYeAboveMax;
 
   // (ii)-(iv)
-  const RootSolution sol = detail::solve_master(eos, s, g, cons, prim.ye);
+  RootSolution sol = detail::solve_master(eos, s, g, cons, prim.ye);
   rep.iterations = sol.iterations;
   rep.evaluations = sol.evaluations;
   rep.aux_iterations = sol.aux_iterations;
@@ -149,6 +170,17 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   // does not (and the policy did not move it on purpose), or where the table is acausal and the
   // root may not be the only one, every root of the master function is tried.
   detail::Candidate best = detail::complete(eos, s, atm, g, input, sol, prim, ye_rules);
+  if (sol.early_stop && !(best.residual <= s.tolerance) &&
+      !(sol.inversion_flags & (eos::kInvBelowEpsLow | eos::kInvAboveEpsHigh))) {
+    // Brent's early stop (tables) not confirmed by the conserved variables to the root tolerance:
+    // solve again with the bracket closed, as without the early stop. (A root clamped by rules 8/9
+    // is not: its residual is the clamp's, which the root scan below handles as before.)
+    sol = detail::solve_master(eos, s, g, cons, prim.ye, false);
+    rep.iterations += sol.iterations;
+    rep.evaluations += sol.evaluations;
+    rep.status = sol.converged ? Status::ok : Status::not_converged;
+    best = detail::complete(eos, s, atm, g, input, sol, prim, ye_rules);
+  }
   // A clamp by rules 8/9 does not excuse a residual here: raising eps to eps_low can create a root
   // beside the physical one (LS220 above ~5e15 g/cm^3), so a clean root is looked for first.
   const bool wrong = best.finite && !best.atmosphere && best.residual > s.accuracy &&
@@ -179,7 +211,7 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   if (rep.status == Status::ok && best.residual > s.accuracy &&
       (!(best.rules & detail::kRulesMovingState) || detail::acausal_at(eos, best.prim)))
     rep.status = Status::inaccurate;
-  return finish();
+  return finish(best.has_cons ? &best.cons : nullptr);
 }
 
 // The same for the shared EOS handle: one std::visit per call. In loops, visit once outside instead.

@@ -11,6 +11,7 @@ namespace remnant::con2prim {
 struct RootStats {
   int iterations = 0;
   bool converged = false;
+  bool early = false;  // stopped by early_stop (the bracket was not closed)
 };
 
 // Brent's method on [a.x, b.x] with a.f, b.f of opposite sign (or one zero). Eval has members x, f
@@ -19,8 +20,14 @@ struct RootStats {
 // of those quantities to x, estimated by the secant across the bracket, so that the stop means
 // "W, eps (and x) known to rel_tol"; it never goes below round-off. `best` receives the record of b,
 // `other` that of the far end c of the final bracket (for secant_polish).
+//
+// early_stop > 0: also stop when an accepted interpolation step from b is at most early_stop * tol
+// and at most 1e-3 of the step before (b already that close to the root on the superlinear model),
+// instead of one more evaluation a tolerance step across the root to close the bracket. Not a
+// guarantee: the caller checks the result (recover.hpp) and solves again without it where needed.
 template <class Eval, class F>
-RootStats brent_root(F&& eval, Eval a, Eval b, double rel_tol, int max_iter, Eval& best, Eval& other) {
+RootStats brent_root(F&& eval, Eval a, Eval b, double rel_tol, int max_iter, Eval& best, Eval& other,
+                     double early_stop = 0) {
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   RootStats st;
   if (a.f == 0) return best = other = a, st.converged = true, st;
@@ -65,8 +72,15 @@ RootStats brent_root(F&& eval, Eval a, Eval b, double rel_tol, int max_iter, Eva
       if (p > 0) q = -q;
       else p = -p;
       if (2 * p < std::min(3 * m * q - std::abs(tol * q), std::abs(e * q))) {
+        const double step = p / q;
+        if (early_stop > 0 && std::abs(step) <= early_stop * tol && std::abs(step) <= 1e-3 * std::abs(d)) {
+          st.iterations = it;
+          st.converged = st.early = true;
+          best = b, other = c;
+          return st;
+        }
         e = d;
-        d = p / q;
+        d = step;
       } else {
         d = e = m;
       }

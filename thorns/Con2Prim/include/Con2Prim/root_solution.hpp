@@ -44,9 +44,11 @@ struct RootSolution {
   Vec3 v{};         // v^i
   double eps = 0;   // after the eps -> T clamps (rules 8/9)
   double T = 0;
+  double lnT = NAN;  // tables: ln T of the root where T = exp(lnT) (not clamped to T_min/T_max)
   std::uint32_t inversion_flags = 0;
   bool bracketed = true;
   bool converged = true;
+  bool early_stop = false;  // Brent stopped before closing its bracket (root_finding.hpp)
   int iterations = 0, evaluations = 0, aux_iterations = 0;
 };
 

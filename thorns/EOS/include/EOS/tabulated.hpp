@@ -52,6 +52,19 @@ class Tabulated {
     o.h = 1 + o.eps + o.press / rho;
     return o;
   }
+  // p and cs2 of thermo() where ln T is already known (the primitive recovery's root): the same
+  // interpolant without the ln T -> T -> ln T round trip and without the other fields.
+  [[gnu::always_inline]] PressCs2 press_cs2(double rho, double lnT, double ye) const {
+    std::size_t ir, it, iy;
+    double fr, ft, fy;
+    locate(t_->lrho, std::log(rho), ir, fr);
+    locate(t_->lT, lnT, it, ft);
+    locate(t_->ye, ye, iy, fy);
+    const double* p = t_->thermo.data() + ((iy * t_->lT.n + it) * t_->lrho.n + ir) * kThermoStride;
+    counter_.add();
+    return {std::exp(trilinear(p + kLogP, sr_, st_, sy_, fr, ft, fy)) - t_->p_shift,
+            trilinear(p + kCs2, sr_, st_, sy_, fr, ft, fy)};
+  }
   double press(double rho, double T, double ye) const {
     counter_.add();
     return std::exp(interp(stencil(rho, T, ye), kLogP)) - t_->p_shift;
@@ -185,8 +198,8 @@ class Tabulated {
     s.sr = sr_, s.st = st_, s.sy = sy_;
     return s;
   }
-  static double trilinear(const double* p, std::size_t sr, std::size_t st, std::size_t sy, double fr, double ft,
-                          double fy) {
+  [[gnu::always_inline]] static double trilinear(const double* p, std::size_t sr, std::size_t st, std::size_t sy,
+                                                 double fr, double ft, double fy) {
     const double c00 = (1 - fr) * p[0] + fr * p[sr];
     const double c10 = (1 - fr) * p[st] + fr * p[st + sr];
     const double c01 = (1 - fr) * p[sy] + fr * p[sy + sr];

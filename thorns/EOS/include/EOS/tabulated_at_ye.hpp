@@ -11,7 +11,8 @@
 // to round-off, with the same flags (tests EOSTabulatedAtYe.*).
 //
 // Table calls counted (the unit of Tabulated's counter): one per read of a (rho, Ye)-column node or
-// of one interpolation cell, however many fields are taken from it.
+// of one interpolation cell, however many fields are taken from it (ln p is read with ln eps at
+// every node, so the interval found by the search needs no further read for p).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -22,6 +23,8 @@
 
 namespace remnant::eos {
 
+// The search is forced inline (gnu::always_inline) into the master function, which calls it once per
+// evaluation: as separate calls the Result and Column copies cost more than the search itself.
 template <class Tab>
 class TabulatedAtYe {
  public:
@@ -52,7 +55,7 @@ class TabulatedAtYe {
   //              selects the root where eps is not monotonic in T (monotone_cell 0).
   //   lnT_hint:  where the search starts in a monotone cell (not finite: none); the result there is
   //              unique, so the hint changes only the cost.
-  Result invert(double rho, double eps, double lnT_guess, double lnT_hint) const {
+  [[gnu::always_inline]] Result invert(double rho, double eps, double lnT_guess, double lnT_hint) const {
     Result r;
     r.eps = eps;
     const Bounds& b = t_.bounds;
@@ -68,14 +71,21 @@ class TabulatedAtYe {
   }
 
  private:
-  // Bilinear (rho, Ye) combination of the four columns at T node j, for one field.
+  // ln p and ln(eps + shift) at one T node: the bilinear (rho, Ye) combination of the four columns.
+  // Both fields sit next to each other in each 64-byte record, so they are read together (one table
+  // call) and combined with the same weights (the two lanes do the same arithmetic as one field).
+  struct Node {
+    double lp, le;
+  };
   struct Column {
     const double* p;
     std::size_t sr, sy, st;
     double w00, w01, w10, w11;  // corner weights (1-fy)(1-fr), (1-fy)fr, fy(1-fr), fy fr
-    double node(int j, int field) const {
-      const double* q = p + j * st + field;
-      return w00 * q[0] + w01 * q[sr] + w10 * q[sy] + w11 * q[sy + sr];
+    [[gnu::always_inline]] Node node(int j) const {
+      static_assert(kLogEps == kLogP + 1, "ln p and ln eps adjacent in the record");
+      const double* q = p + j * st + kLogP;
+      return {w00 * q[0] + w01 * q[sr] + w10 * q[sy] + w11 * q[sy + sr],
+              w00 * q[1] + w01 * q[sr + 1] + w10 * q[sy + 1] + w11 * q[sy + sr + 1]};
     }
   };
 
@@ -89,58 +99,58 @@ class TabulatedAtYe {
   // eps rises with T along the column: the interval j with E(j) <= target < E(j+1) is unique. From
   // the hinted interval, hunt outwards (steps 1, 2, 4, ...) to a bracket, then bisect; the end nodes
   // are read only when the hunt reaches them (rules 8/9: target <= E(0), target >= E(last)).
-  Result invert_monotone(const Column& c, double target, int j, Result& r) const {
+  // Every node read gives ln p too, so the bracketing interval's p costs no further read.
+  [[gnu::always_inline]] Result invert_monotone(const Column& c, double target, int j, Result& r) const {
     const int last = t_.lT.n - 1;
     int l = 0, h = last;
-    double fl, fh;
+    Node nl{}, nh{};
     if (j >= 0) {
       eos_.counter().add();  // one cell: E and p at both ends of the hinted interval
-      const double g0 = c.node(j, kLogEps), g1 = c.node(j + 1, kLogEps);
-      if (g0 < target && target < g1) return interior(c, j, g0, g1, target, r);
-      if (!(target > g0)) {  // below: hunt down for a node <= target
-        if (j == 0) return clamped(c, 0, g0, t_.bounds.T_min, kInvBelowEpsLow, r);
-        h = j, fh = g0;
+      const Node g0 = c.node(j), g1 = c.node(j + 1);
+      if (g0.le < target && target < g1.le) return interior(j, g0, g1, target, r);
+      if (!(target > g0.le)) {  // below: hunt down for a node <= target
+        if (j == 0) return clamped(g0, t_.bounds.T_min, kInvBelowEpsLow, r);
+        h = j, nh = g0;
         for (int step = 1;; step *= 2) {
           const int k = std::max(h - step, 0);
           eos_.counter().add();
-          const double fk = c.node(k, kLogEps);
-          if (k == 0 && !(target > fk)) return clamped(c, 0, fk, t_.bounds.T_min, kInvBelowEpsLow, r);
-          if (fk <= target) {
-            l = k, fl = fk;
+          const Node nk = c.node(k);
+          if (k == 0 && !(target > nk.le)) return clamped(nk, t_.bounds.T_min, kInvBelowEpsLow, r);
+          if (nk.le <= target) {
+            l = k, nl = nk;
             break;
           }
-          h = k, fh = fk;
+          h = k, nh = nk;
         }
       } else {  // at or above: hunt up for a node > target
-        if (j + 1 == last) return clamped(c, last, g1, t_.bounds.T_max, kInvAboveEpsHigh, r);
-        l = j + 1, fl = g1;
+        if (j + 1 == last) return clamped(g1, t_.bounds.T_max, kInvAboveEpsHigh, r);
+        l = j + 1, nl = g1;
         for (int step = 1;; step *= 2) {
           const int k = std::min(l + step, last);
           eos_.counter().add();
-          const double fk = c.node(k, kLogEps);
-          if (k == last && target >= fk) return clamped(c, last, fk, t_.bounds.T_max, kInvAboveEpsHigh, r);
-          if (fk > target) {
-            h = k, fh = fk;
+          const Node nk = c.node(k);
+          if (k == last && target >= nk.le) return clamped(nk, t_.bounds.T_max, kInvAboveEpsHigh, r);
+          if (nk.le > target) {
+            h = k, nh = nk;
             break;
           }
-          l = k, fl = fk;
+          l = k, nl = nk;
         }
       }
     } else {
       eos_.counter().add(2);
-      fl = c.node(0, kLogEps), fh = c.node(last, kLogEps);
-      if (!(target > fl)) return clamped(c, 0, fl, t_.bounds.T_min, kInvBelowEpsLow, r);  // rule 8
-      if (target >= fh) return clamped(c, last, fh, t_.bounds.T_max, kInvAboveEpsHigh, r);  // rule 9
+      nl = c.node(0), nh = c.node(last);
+      if (!(target > nl.le)) return clamped(nl, t_.bounds.T_min, kInvBelowEpsLow, r);  // rule 8
+      if (target >= nh.le) return clamped(nh, t_.bounds.T_max, kInvAboveEpsHigh, r);  // rule 9
     }
     while (h - l > 1) {
       const int mid = (l + h) / 2;
       eos_.counter().add();
-      const double fm = c.node(mid, kLogEps);
-      if (fm <= target) l = mid, fl = fm;
-      else h = mid, fh = fm;
+      const Node nm = c.node(mid);
+      if (nm.le <= target) l = mid, nl = nm;
+      else h = mid, nh = nm;
     }
-    eos_.counter().add();  // p on the interval's cell
-    return interior(c, l, fl, fh, target, r);
+    return interior(l, nl, nh, target, r);
   }
 
   // Any column (Tabulated::temperature's exact inversion): the end nodes for rules 8/9, then the
@@ -148,9 +158,9 @@ class TabulatedAtYe {
   Result invert_any(const Column& c, double target, int jg, Result& r) const {
     const int last = t_.lT.n - 1;
     eos_.counter().add(2);
-    const double lo = c.node(0, kLogEps), hi = c.node(last, kLogEps);
-    if (!(target > lo)) return clamped(c, 0, lo, t_.bounds.T_min, kInvBelowEpsLow, r);  // rule 8 (and NaN)
-    if (target >= hi) return clamped(c, last, hi, t_.bounds.T_max, kInvAboveEpsHigh, r);  // rule 9
+    const Node lo = c.node(0), hi = c.node(last);
+    if (!(target > lo.le)) return clamped(lo, t_.bounds.T_min, kInvBelowEpsLow, r);  // rule 8 (and NaN)
+    if (target >= hi.le) return clamped(hi, t_.bounds.T_max, kInvAboveEpsHigh, r);  // rule 9
     const int start = jg >= 0 ? jg : 0;
     bool read = false;
     for (int d = 0; d <= last; ++d)
@@ -158,31 +168,27 @@ class TabulatedAtYe {
         if (s < 0 || s >= last || (d == 0 && read)) continue;
         eos_.counter().add(2);
         read = true;
-        const double e0 = c.node(s, kLogEps), e1 = c.node(s + 1, kLogEps);
-        if ((e0 <= target && target <= e1) || (e1 <= target && target <= e0)) {
-          eos_.counter().add();  // p on the interval's cell
-          return interior(c, s, e0, e1, target, r);
-        }
+        const Node n0 = c.node(s), n1 = c.node(s + 1);
+        if ((n0.le <= target && target <= n1.le) || (n1.le <= target && target <= n0.le))
+          return interior(s, n0, n1, target, r);
       }
-    return clamped(c, 0, lo, t_.bounds.T_min, kInvBelowEpsLow, r);  // unreachable: lo < target < hi
+    return clamped(lo, t_.bounds.T_min, kInvBelowEpsLow, r);  // unreachable: lo < target < hi
   }
 
   // Linear in ln T on [node j, node j+1] (as Tabulated's exact inversion), p with the same fraction.
-  Result interior(const Column& c, int j, double ej, double ej1, double target, Result& r) const {
+  [[gnu::always_inline]] Result interior(int j, const Node& n0, const Node& n1, double target, Result& r) const {
     const Axis& a = t_.lT;
-    const double f = ej1 != ej ? (target - ej) / (ej1 - ej) : 0.0;
+    const double f = n1.le != n0.le ? (target - n0.le) / (n1.le - n0.le) : 0.0;
     r.lnT = a.node(j) + a.dx * f;  // T = exp(lnT) is left to the caller (needed at the root only)
-    const double lp = (1 - f) * c.node(j, kLogP) + f * c.node(j + 1, kLogP);
-    r.press = std::exp(lp) - t_.p_shift;
+    r.press = std::exp((1 - f) * n0.lp + f * n1.lp) - t_.p_shift;
     return r;
   }
-  Result clamped(const Column& c, int j, double ej, double T, std::uint32_t flag, Result& r) const {
+  Result clamped(const Node& n, double T, std::uint32_t flag, Result& r) const {
     r.T = T;
     r.lnT = std::log(T);
-    r.eps = std::exp(ej) - t_.eps_shift;
+    r.eps = std::exp(n.le) - t_.eps_shift;
     r.flags |= flag;
-    eos_.counter().add();  // p at the end node
-    r.press = std::exp(c.node(j, kLogP)) - t_.p_shift;
+    r.press = std::exp(n.lp) - t_.p_shift;
     return r;
   }
 

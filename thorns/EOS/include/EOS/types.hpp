@@ -11,6 +11,9 @@ namespace remnant::eos {
 struct Thermo {
   double press = 0, eps = 0, cs2 = 0, h = 1, entropy = 0;
 };
+struct PressCs2 {
+  double press = 0, cs2 = 0;
+};
 
 // Chemical potentials in MeV, each including its particle's rest mass relative to m_n
 // (StellarCollapse convention): neutrinoless beta equilibrium is mu_e + mu_p - mu_n = 0.
