@@ -30,35 +30,46 @@ inline double hll_product(double ap, double am, double vl, double vh, double bl,
   return (ap * vl * bl + am * vh * bh - ap * am * (bh - bl)) / w;
 }
 
-// Face values q[-2..1] around an edge between cells -1 and 0: MC-limited values on both sides.
-inline void edge_states(double qm2, double qm1, double q0, double qp1, double& low, double& high) {
-  low = qm1 + 0.5 * detail::mc_slope(qm1 - qm2, q0 - qm1);
-  high = q0 - 0.5 * detail::mc_slope(q0 - qm1, qp1 - q0);
+// The two states at an edge between cells -1 and 0 from the face values q[-3..2] (q points at
+// cell 0): MC- or minmod-limited (q[-2..1] read) or PPM, classic or extremum-preserving
+// (reconstruction.hpp on the six values; GRMHD::emf_reconstruction).
+inline void edge_states(Reconstruction r, const double* q, double& low, double& high) {
+  if (ghosts_needed(r) == 3) {
+    double left[1], right[1], face[ppm_scratch_size(0)];
+    reconstruct(r, q, left, right, 0, face);
+    low = left[0];
+    high = right[0];
+    return;
+  }
+  const double qm2 = q[-2], qm1 = q[-1], q0 = q[0], qp1 = q[1];
+  const bool mc = r == Reconstruction::mc;
+  low = qm1 + 0.5 * (mc ? detail::mc_slope(qm1 - qm2, q0 - qm1) : detail::minmod(qm1 - qm2, q0 - qm1));
+  high = q0 - 0.5 * (mc ? detail::mc_slope(q0 - qm1, qp1 - q0) : detail::minmod(q0 - qm1, qp1 - q0));
 }
 
 // One direction's part -/+ HLL_a(vt^a B^b) of an edge: the two a-faces adjacent along b (ct_a at
 // offsets oa - sb and oa), and B^b of the b-face through the edge reconstructed along a from the
-// face values q[-2..1] of the cells a-2 .. a+1.
-inline double upwind_part(const Strided* ct, std::ptrdiff_t oa, std::ptrdiff_t sb, const double* q) {
+// face values q[-3..2] of the cells a-3 .. a+2 (q points at cell a).
+inline double upwind_part(const Strided* ct, std::ptrdiff_t oa, std::ptrdiff_t sb, Reconstruction r, const double* q) {
   const std::ptrdiff_t lo = oa - sb;
   const double ap = std::max(ct[kAlphaPlus][lo], ct[kAlphaPlus][oa]);
   const double am = std::max(ct[kAlphaMinus][lo], ct[kAlphaMinus][oa]);
   const double vl = 0.5 * (ct[kVtLeft][lo] + ct[kVtLeft][oa]);
   const double vh = 0.5 * (ct[kVtRight][lo] + ct[kVtRight][oa]);
   double bl, bh;
-  edge_states(q[0], q[1], q[2], q[3], bl, bh);
+  edge_states(r, q, bl, bh);
   return hll_product(ap, am, vl, vh, bl, bh);
 }
 
-// The four face values of the faces normal to b through cells a-2 .. a+1 of the edge at id (b-face
-// index id[b]). Curvilinear: as orthonormal face means (orthonormal_factor of each face's cell
+// The face values q[-w..w-1] of the faces normal to b through cells a-w .. a+w-1 of the edge at id
+// (b-face index id[b]; w = 2 for MC and minmod, 3 for PPM; q points at cell a). Curvilinear: as orthonormal face means (orthonormal_factor of each face's cell
 // extent), smooth through the axis and the origin, then divided by the signed scale factor h_b at
 // the edge, so that the upwind dissipation sees no spurious jumps of the coordinate components
 // (B^theta ~ 1/r near the origin); zero on the axis and at the origin (h_b = 0, zero-length edges).
 inline void face_values_along(const Block& blk, const Strided& bf, int a, int b, const int* id, bool curvilinear,
-                              double* q) {
+                              int w, double* q) {
   const std::ptrdiff_t o = bf.at(id), sa = bf.stride(a);
-  for (int m = 0; m < 4; ++m) q[m] = bf[o + (m - 2) * sa];
+  for (int m = -w; m < w; ++m) q[m] = bf[o + m * sa];
   if (!curvilinear) return;
   int cell[3] = {id[0], id[1], id[2]};
   Point3 x{};
@@ -68,8 +79,8 @@ inline void face_values_along(const Block& blk, const Strided& bf, int a, int b,
                    : b == 1                                         ? x[0]
                                                                     : x[0] * std::sin(x[1]);
   const double ih = h != 0 ? 1.0 / h : 0.0;
-  for (int m = 0; m < 4; ++m) {
-    cell[a] = id[a] + m - 2;
+  for (int m = -w; m < w; ++m) {
+    cell[a] = id[a] + m;
     q[m] *= hydrobase::orthonormal_factor(blk, b, cell) * ih;
   }
 }
@@ -137,12 +148,13 @@ void uct_hll_row_cartesian(const Strided* cta, const Strided* ctb, const Strided
 
 }  // namespace
 
-void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b) {
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b, Reconstruction edge_reconstruction) {
   if (scheme == EmfScheme::uct_contact) throw std::logic_error("edge_emfs: uct_contact needs the hydro groups");
-  edge_emfs(scheme, g, Groups{}, b);
+  edge_emfs(scheme, g, Groups{}, b, edge_reconstruction);
 }
 
-void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block& b) {
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block& b, Reconstruction edge_reconstruction) {
+  const int w = ghosts_needed(edge_reconstruction);
   std::optional<ContactEmfFields> contact;
   if (scheme == EmfScheme::uct_contact) contact.emplace(g, hydro, b);
   bool used[3];
@@ -180,10 +192,13 @@ void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block&
           if (used[a] && used[bb]) {
             const std::ptrdiff_t oa = cta[0].at(id), ob = ctb[0].at(id);
             if (scheme == EmfScheme::uct_hll) {
-              double qb[4], qa[4];
-              face_values_along(b, Bb, a, bb, id, curvilinear, qb);
-              face_values_along(b, Ba, bb, a, id, curvilinear, qa);
-              emf = -upwind_part(cta, oa, cta[0].stride(bb), qb) + upwind_part(ctb, ob, ctb[0].stride(a), qa);
+              double qb_store[6], qa_store[6];
+              double* qb = qb_store + 3;
+              double* qa = qa_store + 3;
+              face_values_along(b, Bb, a, bb, id, curvilinear, w, qb);
+              face_values_along(b, Ba, bb, a, id, curvilinear, w, qa);
+              emf = -upwind_part(cta, oa, cta[0].stride(bb), edge_reconstruction, qb) +
+                    upwind_part(ctb, ob, ctb[0].stride(a), edge_reconstruction, qa);
             } else if (scheme == EmfScheme::uct_contact) {
               const std::ptrdiff_t sb = cta[0].stride(bb), sa = ctb[0].stride(a);
               const double ea[2] = {-cta[kFluxNext][oa - sb], -cta[kFluxNext][oa]};

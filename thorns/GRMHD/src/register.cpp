@@ -42,20 +42,24 @@ void check_field_parameters(const Context& ctx) {
       if (v != 0) refuse(name);
   if (ctx.param<double>("GRMHD", "field_potential_amplitude") != 0) refuse("field_potential_amplitude");
   if (ctx.param<std::string>("GRMHD", "emf") != "uct_hll") refuse("emf");
+  if (ctx.param<std::string>("GRMHD", "emf_reconstruction") != "mc") refuse("emf_reconstruction");
   if (ctx.param<std::string>("GRMHD", "initial_data") == "alfven_wave") refuse("initial_data");
 }
 
 void check_parameters(Context& ctx) {
   check_field_parameters(ctx);
   check_positivity_limiter(ctx);
-  const RhsSettings s = rhs_settings(ctx);
-  for (Block* b : ctx.grid().local_blocks())
-    for (int d = 0; d < 3; ++d)
-      if (b->ng[d] > 0 && b->ng[d] < ghosts_needed(s.reconstruction))
-        throw InputError(ctx.params().origin("GRMHD", "reconstruction"),
-                         "GRMHD::reconstruction = " + ctx.param<std::string>("GRMHD", "reconstruction") + " needs " +
-                             std::to_string(ghosts_needed(s.reconstruction)) + " ghost zones; Grid::ghost_zones is " +
-                             std::to_string(b->ng[d]));
+  for (const char* name : {"reconstruction", "emf_reconstruction"}) {
+    if (std::string(name) == "emf_reconstruction" && !hydrobase::magnetic_field_evolved(ctx)) continue;
+    const std::string& value = ctx.param<std::string>("GRMHD", name);
+    const int needed = ghosts_needed(parse_reconstruction(value));
+    for (Block* b : ctx.grid().local_blocks())
+      for (int d = 0; d < 3; ++d)
+        if (b->ng[d] > 0 && b->ng[d] < needed)
+          throw InputError(ctx.params().origin("GRMHD", name),
+                           std::string("GRMHD::") + name + " = " + value + " needs " + std::to_string(needed) +
+                               " ghost zones; Grid::ghost_zones is " + std::to_string(b->ng[d]));
+  }
 }
 
 void calc_rhs(Context& ctx) {
@@ -99,7 +103,8 @@ void calc_rhs_mhd(Context& ctx) {
       std::fill(b->data(mg.ct[d]), b->data(mg.ct[d]) + b->size(mg.ct[d]), 0.0);
     }
   ctx.grid().correct_fluxes(faces);
-  for (Block* b : ctx.grid().local_blocks()) edge_emfs(scheme, mg, g, *b);
+  const Reconstruction edge_rec = parse_reconstruction(ctx.param<std::string>("GRMHD", "emf_reconstruction"));
+  for (Block* b : ctx.grid().local_blocks()) edge_emfs(scheme, mg, g, *b, edge_rec);
   ctx.grid().correct_edges(mg.emf);
   const DomainCells dom = DomainCells::of(ctx);
   for (Block* b : ctx.grid().local_blocks()) {

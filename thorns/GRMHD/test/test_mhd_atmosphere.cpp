@@ -82,3 +82,28 @@ TEST(MHDParameters, FieldParameterWithoutFieldIsAnError) {
     EXPECT_NE(m.find("run.yaml:"), std::string::npos) << m;
   }
 }
+
+// GRMHD::emf_reconstruction: refused without a field; a PPM edge reconstruction needs 3 ghost zones.
+TEST(MHDParameters, EmfReconstructionErrors) {
+  std::string par = mhd_parfile(kGrid, "reconstruction: mc, emf_reconstruction: ppm, initial_data: shock_tube",
+                                "cfl: 0.4, max_iterations: 1");
+  std::string none = par;
+  none.replace(none.find("magnetic_field: evolved"), 23, "magnetic_field: none");
+  try {
+    MhdRun run(none);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("GRMHD::emf_reconstruction is a magnetic-field parameter"), std::string::npos) << m;
+  }
+  std::string two = par;
+  two.replace(two.find("ghost_zones: 3"), 14, "ghost_zones: 2");
+  try {
+    MhdRun run(two);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("GRMHD::emf_reconstruction = ppm needs 3 ghost zones; Grid::ghost_zones is 2"), std::string::npos) << m;
+    EXPECT_NE(m.find("run.yaml:"), std::string::npos) << m;
+  }
+}

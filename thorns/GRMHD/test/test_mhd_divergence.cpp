@@ -26,8 +26,8 @@ struct Case {
 // through the periodic seam); potential: GRMHD::field_potential.
 void expect_divergence_free(const Case& c, const std::string& emf, int steps = 12,
                             std::array<long long, 3> periodic_cells = {0, 0, 0},
-                            const std::string& potential = "smooth_test") {
-  const std::string grmhd = "reconstruction: ppm, emf: " + emf +
+                            const std::string& potential = "smooth_test", const std::string& edges = "mc") {
+  const std::string grmhd = "reconstruction: ppm, emf: " + emf + ", emf_reconstruction: " + edges +
                             ", initial_data: shock_tube, shock_position: 0.55, "
                             "shock_left: [1.0, 0.3, 0.2, 0.1, 1.0], shock_right: [0.2, -0.2, 0.1, -0.3, 0.1], "
                             "shock_field_left: [0.0, 0.0, 0.0], shock_field_right: [0.0, 0.0, 0.0], "
@@ -81,6 +81,9 @@ TEST(MHDDivergence, Cartesian3DRefined) {
                          "uct_hll", 6);
 }
 
+// The PPM edge states read a third ghost layer of the face fields (refinement boundaries included).
+TEST(MHDDivergence, Cartesian3DRefinedPpmEpEdges) { expect_divergence_free(kCartesian3D, "uct_hll", 6, {0, 0, 0}, "smooth_test", "ppm_ep"); }
+
 TEST(MHDDivergence, Cartesian3DRefinedContact) {
   expect_divergence_free(kCartesian3D,
                          "uct_contact", 6);
@@ -95,6 +98,16 @@ TEST(MHDDivergence, Cylindrical2DRefined) {
                           "max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.0, 0.2, -0.2, 0.1, -10, 10]",
                           0.1},
                          "uct_hll");
+}
+
+TEST(MHDDivergence, Cylindrical2DRefinedPpmEpEdges) {
+  expect_divergence_free({"cylindrical 2D, refined box, ppm_ep edges",
+                          "coordinates: cylindrical, dimension: 2, ncells: [32, 32, 1], block_size: [8, 8, 1], "
+                          "xmin: [0, -0.5, 0], xmax: [1, 0.5, 1], ghost_zones: 3, "
+                          "boundary_lower: [axis, outflow, outflow], boundary_upper: [outflow, outflow, outflow], "
+                          "max_level: 1, regions: [box], region_levels: [1], region_bounds: [0.0, 0.2, -0.2, 0.1, -10, 10]",
+                          0.1},
+                         "uct_hll", 12, {0, 0, 0}, "smooth_test", "ppm_ep");
 }
 
 TEST(MHDDivergence, Spherical2DRefinedContact) {

@@ -97,6 +97,22 @@ TEST(AlfvenWave, ContactEmfIn2DReducesToThe1DWave) {
   }
 }
 
+// Extremum-preserving PPM for the fluid and for the uct_hll edge states (GRMHD::emf_reconstruction),
+// in 2D so that the edge EMFs reconstruct the y-face field along x: second order as MC and PPM.
+TEST(AlfvenWave, ExtremumPreservingPpmEdgesIn2D) {
+  WaveErrors e[3];
+  const int ns[3] = {32, 64, 128};
+  for (int r = 0; r < 3; ++r) e[r] = alfven_errors(ns[r], "ppm_ep", "uct_hll", ", emf_reconstruction: ppm_ep", 4);
+  const double order = std::log2(e[1].field / e[2].field), vorder = std::log2(e[1].velocity / e[2].velocity);
+  std::printf("Alfven wave 2D (n x 4, ppm_ep, uct_hll with ppm_ep edges): L1(B^2)+L1(B^3) %.3e %.3e %.3e (order %.2f), "
+              "L1(v^2) order %.2f\n",
+              e[0].field, e[1].field, e[2].field, order, vorder);
+  EXPECT_GT(order, 1.8);
+  EXPECT_GT(vorder, 1.8);
+  EXPECT_LT(e[2].field, 2e-3);
+  for (const WaveErrors& w : e) EXPECT_EQ(w.bx, 0.0);
+}
+
 // The positivity limiter leaves a smooth wave alone (the same errors as without it).
 TEST(AlfvenWave, ConvergesAtSecondOrderMCWithPositivityLimiter) {
   expect_second_order("mc", "uct_hll", ", positivity_limiter: lax_friedrichs");

@@ -61,7 +61,7 @@ void ppm_with_branches(const double* q, double* left, double* right, int n) {
 // left and right of exactly n + 1 values between guard values; PPM's scratch of exactly
 // ppm_scratch_size(n) values, also between guards.
 TEST(Reconstruction, WritesOnlyTheFacesOfTheLine) {
-  for (Reconstruction r : {Reconstruction::ppm, Reconstruction::mc, Reconstruction::minmod})
+  for (Reconstruction r : {Reconstruction::ppm, Reconstruction::mc, Reconstruction::minmod, Reconstruction::ppm_ep})
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
       const std::vector<double> q = line(seed);
       std::vector<double> left(kCells + 3, kGuard), right(kCells + 3, kGuard);

@@ -12,16 +12,21 @@
 #include <span>
 #include <string>
 
+#include "GRMHD/ppm_extremum.hpp"
+
 namespace remnant::grmhd {
 
-enum class Reconstruction { ppm, mc, minmod };
+enum class Reconstruction { ppm, mc, minmod, ppm_ep };
 
 inline Reconstruction parse_reconstruction(const std::string& s) {
   if (s == "mc") return Reconstruction::mc;
   if (s == "minmod") return Reconstruction::minmod;
+  if (s == "ppm_ep") return Reconstruction::ppm_ep;
   return Reconstruction::ppm;
 }
-inline int ghosts_needed(Reconstruction r) { return r == Reconstruction::ppm ? 3 : 2; }
+inline int ghosts_needed(Reconstruction r) {
+  return r == Reconstruction::ppm || r == Reconstruction::ppm_ep ? 3 : 2;
+}
 
 namespace detail {
 
@@ -94,6 +99,7 @@ inline void reconstruct(Reconstruction r, const double* q, double* left, double*
     case Reconstruction::ppm: reconstruct_ppm(q, left, right, n, scratch); break;
     case Reconstruction::mc: reconstruct_plm<true>(q, left, right, n); break;
     case Reconstruction::minmod: reconstruct_plm<false>(q, left, right, n); break;
+    case Reconstruction::ppm_ep: reconstruct_ppm_ep(q, left, right, n, scratch); break;
   }
 }
 
