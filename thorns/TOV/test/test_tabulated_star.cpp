@@ -33,9 +33,10 @@
 //    becomes a pressure step. Replacing p at that node (and at two milder ones: (1.377e-4, 0.0411),
 //    index 5.1 vs 0.8; (2.843e-4, 0.3826), 1.3 vs 0.22) by the continuation from T_1, T_2 at load time
 //    (an experiment, not committed: the table is data): 4.88e-4, 1.64e-4, 5.1e-4 (800 converges,
-//    order 1.6; xCFC 5.65e-4, 1.70e-4, 6.1e-4, was 8.6e-4 at 800); dropping the T_min row: 4.41e-4, 1.66e-4, 4.13e-4. Consistent with the 0.5 MeV star
-//    converging. The table's data, not code: nothing to fix in the evolution; with this node repaired
-//    (or the star at T >= T_1) the drift converges to 800.
+//    order 1.6; xCFC 5.65e-4, 1.70e-4, 6.1e-4, was 8.6e-4 at 800); dropping the T_min row: 4.41e-4,
+//    1.66e-4, 4.13e-4. Consistent with the 0.5 MeV star converging. The table's data, not code:
+//    nothing to fix in the evolution; with this node repaired (or the star at T >= T_1) the drift
+//    converges to 800.
 //  - the rest at 1600 is not the table: with the node repaired, 1600 shows isolated packets at r = 0
 //    (t ~ 10, 30, 44; 3.2e-5, 5.1e-4, 1.3e-4), between them the drift converges roughly at first order
 //    (t in [35, 42]: 1.6e-4, 8.5e-5, 3.0e-5; [50, 60]: 1.85e-4, 5.6e-5, 3.3e-5). The
