@@ -52,11 +52,15 @@ void run(benchmark::State& st, const E& e, const Primitives& orig, Method m) {
 // The rho-T plane of remnant-c2p-bench's defaults (100 x 100, W = 2, b^2/2p = 1e-3, Ye = 0.1, B
 // antiparallel to v): one benchmark iteration is one recovery, cycling through the plane. Counters:
 // table_calls (per recovery, from one counted pass), iterations, and failures + silently wrong states.
-void rho_T_plane(benchmark::State& st, const std::shared_ptr<const eos::TableData>& t, Method m) {
+// hint >= 0: each recovery gets the T hint T_true exp(hint u), u uniform in [-1, 1] (as the caller's
+// previous T; remnant-c2p-bench --hint).
+void rho_T_plane(benchmark::State& st, const std::shared_ptr<const eos::TableData>& t, Method m, double hint) {
   const eos::Tabulated<> e(t);
   const eos::Tabulated<eos::CountCalls> counted(t);
   c2p_bench::Options o;
-  const c2p_bench::Plane plane = c2p_bench::rho_T_plane(e, o);
+  o.hint = hint;
+  c2p_bench::Plane plane = c2p_bench::rho_T_plane(e, o);
+  c2p_bench::add_hints(plane, o);
   Settings s = o.settings;
   s.method = m;
   remnant::atmosphere::Atmosphere atm;
@@ -69,9 +73,10 @@ void rho_T_plane(benchmark::State& st, const std::shared_ptr<const eos::TableDat
   std::size_t i = 0;
   for (auto _ : st) {
     Conserved c = cons[i];
+    const double T_hint = plane.points[i].T_hint;
     if (++i == cons.size()) i = 0;
     Primitives p;
-    benchmark::DoNotOptimize(recover(e, s, atm, g, c, p));
+    benchmark::DoNotOptimize(recover(e, s, atm, g, c, p, T_hint));
     benchmark::DoNotOptimize(p);
   }
   st.counters["table_calls"] = su.mean_eos_calls;
@@ -85,9 +90,12 @@ void register_planes() {
     const std::string path = std::string(REMNANT_SHARED_EOS_DIR) + "/" + name + ".h5";
     if (!std::filesystem::exists(path)) continue;
     const auto t = eos::load_table(path);
-    for (Method m : {Method::kastaun, Method::palenzuela})
+    for (Method m : {Method::kastaun, Method::palenzuela}) {
       benchmark::RegisterBenchmark((std::string("rhoT_plane/") + name + "/" + to_string(m)).c_str(),
-                                   [t, m](benchmark::State& st) { rho_T_plane(st, t, m); });
+                                   [t, m](benchmark::State& st) { rho_T_plane(st, t, m, -1); });
+      benchmark::RegisterBenchmark((std::string("rhoT_plane_hint5pc/") + name + "/" + to_string(m)).c_str(),
+                                   [t, m](benchmark::State& st) { rho_T_plane(st, t, m, 0.05); });
+    }
   }
 }
 

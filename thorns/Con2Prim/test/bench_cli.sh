@@ -41,6 +41,7 @@ bad "option --seed=-1: allowed integers 0 .. " -- --seed=-1
 bad "option --fuzz=0: allowed integers 1 .. " -- --fuzz=0
 bad "option --accuracy=0: allowed 0 < accuracy < 1" -- --accuracy=0
 bad "option --rho-max=0: allowed rho > 0" -- --rho-max=0
+bad "option --hint=-1: allowed 0 <= F <= 50" -- --hint=-1
 
 # 1e5 random states, both methods: 0 NaN and 0 silently wrong (the tool exits 3 otherwise).
 start=$(date +%s.%N)
@@ -53,6 +54,15 @@ if [ "$rc" != 0 ]; then echo "FAIL fuzz: exit $rc"; echo "$out" | tail -5; faile
 rows=$(awk -F'\t' '$1 == "fuzz" && $3 == 100000 && $12 == 0 && $14 == 0' "$tmp/fuzz/summary.tsv" | wc -l)
 if [ "$rows" != 2 ]; then echo "FAIL fuzz summary:"; cat "$tmp/fuzz/summary.tsv"; failed=$((failed + 1)); fi
 
+# Far-off T hints (T_true e^{10u}) change only the cost: the same per-state results as without.
+"$exe" "$table" --fuzz=20000 --no-timing --out="$tmp/fz0" >/dev/null 2>&1 || { echo "FAIL fuzz no hint: exit $?"; failed=$((failed + 1)); }
+"$exe" "$table" --fuzz=20000 --no-timing --hint=10 --out="$tmp/fz1" >/dev/null 2>&1 || { echo "FAIL fuzz far hints: exit $?"; failed=$((failed + 1)); }
+for m in kastaun palenzuela; do
+  # Columns: axes, eps_recov, iterations, status, residual, rules (not evaluations/eos_calls: the cost).
+  if ! cmp -s <(cut -f1-4,7-9 "$tmp/fz0/fuzz_$m.tsv") <(cut -f1-4,7-9 "$tmp/fz1/fuzz_$m.tsv"); then
+    echo "FAIL far hints changed $m results"; failed=$((failed + 1))
+  else echo "ok   far hints: $m results identical to unhinted"; fi
+done
 # The README's accuracy figures (issue 20, item 6): the paper's two planes on SFHo. Measured mean
 # eps_recov on the rho-T plane 5.8e-14 (Kastaun) and 8.43e-14 (Palenzuela) with 16.5 / 24.9 table
 # calls (45.4 / 56.1 before issue 21's cached-Ye slice); the W-b^2/2p plane 9.6e-10 / 9.0e-10 with

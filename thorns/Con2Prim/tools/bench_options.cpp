@@ -37,6 +37,8 @@ const char* kUsage =
     "  --w-max=X                      error-policy W_max (default: none)\n"
     "  --rho-thr=X                    atmosphere threshold, code units (default: none)\n"
     "  --seed=N                       directions of v and B (default 1)\n"
+"  --hint=F                       pass recover() the T hint T_true exp(F u), u uniform in [-1, 1] (seeded by\n"
+    "                                 --seed): 0.05 = within 5 %, as from the previous step; 10 = far off\n"
     "  --min-time=S                   seconds per timing run (default 0.5); --no-timing skips it\n"
     "  --fuzz=N                       instead of the planes: N random states over the whole table (rho, T, Ye),\n"
     "                                 W in [1, 1e4], b^2/2p in [1e-10, 1e10]; counts failures, NaN, silently wrong\n"
@@ -137,6 +139,10 @@ bool parse_options(int argc, char** argv, Options& o, bool& ok) {
       else if (key == "--seed") o.seed = unsigned(integer(key, val, 0, 4294967295LL));
       else if (key == "--fuzz") o.fuzz = std::size_t(integer(key, val, 1, 1000000000LL));
       else if (key == "--min-time") o.min_time = number(key, val);
+      else if (key == "--hint") {
+        o.hint = number(key, val);
+        allow(o.hint >= 0 && o.hint <= 50, "--hint", o.hint, "0 <= F <= 50");
+      }
       else if (key == "--no-timing") o.time_it = false;
       else throw std::runtime_error("unknown option " + key);
     }

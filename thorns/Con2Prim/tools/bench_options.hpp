@@ -34,6 +34,7 @@ struct Options {
   double min_time = 0.5;                 // seconds per timing
   bool time_it = true;
   std::size_t fuzz = 0;                  // > 0: N random states over the whole table instead of the planes
+  double hint = -1;                      // >= 0: each recovery gets T_hint = T exp(hint u), u uniform in [-1, 1]
 };
 
 // Parses argv; on --help or an error prints usage and returns false (`ok` says which).

@@ -114,6 +114,13 @@ Plane fuzz_states(const eos::Tabulated<>& e, const Options& o) {
   return p;
 }
 
+void add_hints(Plane& plane, const Options& o) {
+  if (o.hint < 0) return;
+  std::mt19937_64 rng(o.seed + 2);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (PlanePoint& pt : plane.points) pt.T_hint = pt.orig.T * std::exp(o.hint * u(rng));
+}
+
 double eps_recov(const Primitives& got, const Primitives& orig) {
   return (rel(got.rho, orig.rho) + vec_rel(got.v, orig.v) + rel(got.eps, orig.eps) + vec_rel(got.B, orig.B) +
           rel(got.ye, orig.ye)) /
@@ -128,7 +135,7 @@ std::vector<PointResult> run_counted(const eos::Tabulated<eos::CountCalls>& e, c
   for (const PlanePoint& pt : plane.points) {
     Conserved c = prim_to_cons(pt.orig, g);
     Primitives got;
-    const Report rep = recover(e, s, atm, g, c, got);
+    const Report rep = recover(e, s, atm, g, c, got, pt.T_hint);
     PointResult r;
     r.eps_recov = eps_recov(got, pt.orig);
     r.iterations = rep.iterations;
@@ -156,10 +163,11 @@ double time_ns_per_recovery(const eos::Tabulated<>& e, const Settings& s, const 
   const auto t0 = clock::now();
   double elapsed = 0;
   while (elapsed < min_seconds) {
+    const PlanePoint* pt = plane.points.data();
     for (const Conserved& c0 : cons) {
       Conserved c = c0;
       Primitives p;
-      recover(e, s, atm, g, c, p);
+      recover(e, s, atm, g, c, p, (pt++)->T_hint);
       sink += p.rho;
     }
     done += cons.size();

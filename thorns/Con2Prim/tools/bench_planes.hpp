@@ -17,6 +17,7 @@ namespace c2p_bench {
 struct PlanePoint {
   double x = 0, y = 0;  // the plane's axes (log10 values)
   remnant::con2prim::Primitives orig;
+  double T_hint = 0;  // passed to recover() (0: none)
 };
 
 struct Plane {
@@ -58,6 +59,8 @@ Plane W_b_plane(const remnant::eos::Tabulated<>& eos, const Options& o);
 // --fuzz=N: N states drawn uniformly in log rho, log T, Ye over the whole table, log W in [0, 4],
 // log10(b^2/2p) in [-10, 10], v and B in independent random directions (seeded by --seed).
 Plane fuzz_states(const remnant::eos::Tabulated<>& eos, const Options& o);
+// --hint=F: every point's T_hint = T exp(F u), u uniform in [-1, 1] (seeded by --seed).
+void add_hints(Plane& plane, const Options& o);
 
 // eps_recov = (1/5) sum over (rho, v, eps, B, Ye) of |1 - P_recov/P_orig| (vectors: |dP|/|P|).
 double eps_recov(const remnant::con2prim::Primitives& got, const remnant::con2prim::Primitives& orig);

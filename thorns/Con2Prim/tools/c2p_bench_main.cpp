@@ -35,7 +35,12 @@ std::string describe(const Options& o, const eos::Bounds& b) {
                 o.log_b2p.n, o.random_B ? "in random directions" : "antiparallel to v", o.settings.tolerance,
                 o.settings.max_iterations, o.settings.eps_to_T == eos::InversionMethod::brent ? "brent" : "exact",
                 o.settings.secant_polish ? "on" : "off");
-  return buf;
+  std::string out = buf;
+  if (o.hint >= 0) {
+    std::snprintf(buf, sizeof buf, "# T hint passed to recover(): T_true exp(%g u), u uniform in [-1, 1]\n", o.hint);
+    out += buf;
+  }
+  return out;
 }
 
 }  // namespace
@@ -78,6 +83,7 @@ int main(int argc, char** argv) {
       if (o.plane_rho_T) planes.push_back(rho_T_plane(plain, o));
       if (o.plane_W_b) planes.push_back(W_b_plane(plain, o));
     }
+    for (Plane& plane : planes) add_hints(plane, o);
     std::size_t bad = 0;
     for (const Plane& plane : planes) {
       for (c2p::Method m : o.methods) {

@@ -113,7 +113,8 @@ void recover_impl(const E& eos, const con2prim::Settings& s, const atmosphere::A
     con2prim::Primitives p;
     p.T = acc.prim[Prim::idx::temperature].origin[o];
     const con2prim::Metric3 m = cell_metric(psi4, fd);
-    const con2prim::Report r = con2prim::recover(eos, s, atm, m, c, p);
+    // The cell's T from the last recovery starts the table's T search (cost only, not the root).
+    const con2prim::Report r = con2prim::recover(eos, s, atm, m, c, p, p.T);
     diag.add(r);
     if (acc.magnetic) cap_atmosphere_magnetisation(eos, atm, m, p, c);
     if (r.fatal() && fatal_cell.empty()) {

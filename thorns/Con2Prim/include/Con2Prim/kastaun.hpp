@@ -23,8 +23,9 @@ class KastaunSolver {
  public:
   using Eval = MasterEval;
 
-  KastaunSolver(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye)
-      : thermo_(eos, s.eps_to_T, ye), D_(c.D) {
+  // T_hint: MasterEos's search hint for the first evaluation (0: none).
+  KastaunSolver(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye, double T_hint = 0)
+      : thermo_(eos, s.eps_to_T, ye, T_hint), D_(c.D) {
     const double invD = 1 / c.D;
     q_ = c.tau * invD;
     for (int i = 0; i < 3; ++i) r_low_[i] = c.S[i] * invD;

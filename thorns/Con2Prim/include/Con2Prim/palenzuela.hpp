@@ -24,8 +24,10 @@ class PalenzuelaSolver {
  public:
   using Eval = MasterEval;
 
-  PalenzuelaSolver(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye)
-      : thermo_(eos, s.eps_to_T, ye), g_(g), c_(c) {
+  // T_hint: MasterEos's search hint for the first evaluation (0: none).
+  PalenzuelaSolver(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye,
+                   double T_hint = 0)
+      : thermo_(eos, s.eps_to_T, ye, T_hint), g_(g), c_(c) {
     const double invD = 1 / c.D;
     q_ = c.tau * invD;
     r_ = g.norm2_down(c.S) * invD * invD;

@@ -120,16 +120,20 @@ int scan(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, 
 
 template <class E>
 RootSolution solve_master(const E& eos, const Settings& s, const Metric3& g, const Conserved& c, double ye,
-                          bool early_stop = true) {
-  if (s.method == Method::palenzuela) return PalenzuelaSolver<E>(eos, s, g, c, ye).solve(s);
-  return KastaunSolver<E>(eos, s, g, c, ye).solve(s, early_stop);
+                          double T_hint, bool early_stop = true) {
+  if (s.method == Method::palenzuela) return PalenzuelaSolver<E>(eos, s, g, c, ye, T_hint).solve(s);
+  return KastaunSolver<E>(eos, s, g, c, ye, T_hint).solve(s, early_stop);
 }
 
 }  // namespace detail
 
+// T_hint (MeV, optional; <= 0 or not finite: none): a temperature near the answer, e.g. the cell's
+// T from the previous step. With a table and the exact inversion it is where the first evaluation's
+// T search starts in cells where eps rises with T; it changes the cost only, never the root found
+// (the root scans start without it). Without it the recovery is bit-identical to before.
 template <class E>
 Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& atm, const Metric3& g,
-               Conserved& cons, Primitives& prim) {
+               Conserved& cons, Primitives& prim, double T_hint = 0) {
   const auto calls0 = eos.counter().count();
   const Conserved input = cons;
   Report rep;
@@ -159,7 +163,7 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   if (prim.ye > b.ye_max) prim.ye = b.ye_max, ye_rules |= kRuleYeAboveMax;
 
   // (ii)-(iv)
-  RootSolution sol = detail::solve_master(eos, s, g, cons, prim.ye);
+  RootSolution sol = detail::solve_master(eos, s, g, cons, prim.ye, T_hint);
   rep.iterations = sol.iterations;
   rep.evaluations = sol.evaluations;
   rep.aux_iterations = sol.aux_iterations;
@@ -175,7 +179,7 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
     // Brent's early stop (tables) not confirmed by the conserved variables to the root tolerance:
     // solve again with the bracket closed, as without the early stop. (A root clamped by rules 8/9
     // is not: its residual is the clamp's, which the root scan below handles as before.)
-    sol = detail::solve_master(eos, s, g, cons, prim.ye, false);
+    sol = detail::solve_master(eos, s, g, cons, prim.ye, T_hint, false);
     rep.iterations += sol.iterations;
     rep.evaluations += sol.evaluations;
     rep.status = sol.converged ? Status::ok : Status::not_converged;
@@ -218,8 +222,8 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
 template <class AnyEos>
   requires requires(const AnyEos& e) { e.visit([](const auto&) {}); }
 Report recover_any(const AnyEos& eos, const Settings& s, const atmosphere::Atmosphere& atm, const Metric3& g,
-                   Conserved& cons, Primitives& prim) {
-  return eos.visit([&](const auto& e) { return recover(e, s, atm, g, cons, prim); });
+                   Conserved& cons, Primitives& prim, double T_hint = 0) {
+  return eos.visit([&](const auto& e) { return recover(e, s, atm, g, cons, prim, T_hint); });
 }
 
 }  // namespace remnant::con2prim
