@@ -38,6 +38,8 @@ eos::EosConfig config_from(const Context& ctx) {
       word("compose_mu_e") == "mu_l" ? eos::ComposeElectronMu::mu_l : eos::ComposeElectronMu::mu_l_minus_mu_q;
   c.read.build.clamp_cs2 = ctx.param<bool>("EOS", "clamp_cs2");
   c.read.build.max_inconsistent_fraction = ctx.param<double>("EOS", "table_max_inconsistent_fraction");
+  c.read.build.thermal_index_max = ctx.param<double>("EOS", "table_thermal_index_max");
+  c.read.build.thermal_index_jump = ctx.param<double>("EOS", "table_thermal_index_jump");
   return c;
 }
 

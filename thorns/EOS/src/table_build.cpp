@@ -1,13 +1,14 @@
 // Load-time checks and conversion of a RawTable into the internal TableData.
 // Errors (TableError): missing or mis-sized fields, bad axes, NaN/Inf in thermodynamic data,
 // eps + shift <= 0. Counted warnings: cs2 outside [0, 1] (clamped), eps not increasing with T,
-// p <= 0 (stored with a shift), NaN in composition (set to 0).
+// p <= 0 (stored with a shift), NaN in composition (set to 0), thermal-index jumps along T.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include "EOS/errors.hpp"
 #include "EOS/table.hpp"
+#include "table_checks.hpp"
 
 namespace remnant::eos {
 namespace {
@@ -233,6 +234,7 @@ std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& o
                "eps does not increase with T between adjacent T points, first at " + at_str(raw, first) +
                    "; eps -> T takes the root nearest the temperature guess there");
   }
+  check_thermal_index(raw, opts, rep);  // a warning only: not counted as inconsistent
   {
     const std::size_t bad = std::count(inconsistent.begin(), inconsistent.end(), std::uint8_t(1));
     const double fraction = double(bad) / double(n);

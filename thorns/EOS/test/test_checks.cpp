@@ -1,5 +1,7 @@
 // Load-time table checks: each problem is a TableError naming file and dataset, or a counted
 // warning in the report. Never a crash or a silent NaN.
+#include <sstream>
+
 #include "EOS/errors.hpp"
 #include "EOS/readers.hpp"
 #include "EOS/tabulated.hpp"
@@ -206,4 +208,65 @@ TEST(EOSChecks, SharedTablesPassTheConsistencyChecks) {
     EXPECT_NO_THROW(t = load_table(path, o)) << name;
     if (t) std::printf("%s:\n%s", name, t->report.str().c_str());
   }
+}
+
+// --- thermal index (dp/deps)_rho / rho along T: check_thermal_index.cpp -------------------------
+
+namespace {
+// A smooth table whose thermal index is large (28 .. 80) but constant along T: only a jump between
+// neighbouring T intervals may warn, not the size alone.
+Synthetic hot_index_table() {
+  Synthetic s;
+  s.logp = {-3.0 + std::log(20.0), 1.0, 0.8, 0.0};
+  s.logeps = {-3.0, 0.05, 0.8, 0.0};
+  return s;
+}
+}  // namespace
+
+TEST(EOSChecks, SmoothTableHasNoThermalIndexWarning) {
+  auto t = build_table(hot_index_table().raw());
+  EXPECT_EQ(t->report.find("thermal_index"), nullptr) << t->report.str();
+}
+
+TEST(EOSChecks, ThermalIndexJumpIsAWarningNamingTheNode) {
+  auto raw = hot_index_table().raw();
+  const std::size_t nr = raw.rho.size(), nt = raw.T.size();
+  auto idx = [&](int ir, int it, int iy) { return (std::size_t(iy) * nt + it) * nr + ir; };
+  // As in the reduced SFHo table: at T_min eps sits just below the next temperature's while p does
+  // not, so the first interval's index is 100x the next one's.
+  const int ir = 7, iy = 3;
+  double& e0 = raw.eps.v[idx(ir, 0, iy)];
+  const double e1 = raw.eps.v[idx(ir, 1, iy)];
+  e0 = e1 - 0.01 * (e1 - e0);
+  std::shared_ptr<const TableData> t;
+  ASSERT_NO_THROW(t = build_table(raw));  // a warning, not an error
+  const CheckIssue* w = t->report.find("thermal_index");
+  ASSERT_NE(w, nullptr) << t->report.str();
+  EXPECT_EQ(w->count, 1u);
+  const std::string& m = w->message;
+  EXPECT_NE(m.find("(irho, iT, iYe) = (7, 0, 3)"), std::string::npos) << m;
+  std::ostringstream rho_cgs;
+  rho_cgs.precision(4);
+  rho_cgs << raw.rho[ir] * remnant::units::density_cgs << " g/cm^3";
+  EXPECT_NE(m.find(rho_cgs.str()), std::string::npos) << m;
+  EXPECT_NE(m.find("pressure step"), std::string::npos) << m;
+  // Above a stricter threshold the same node is not flagged.
+  BuildOptions lax;
+  lax.thermal_index_jump = 200;
+  EXPECT_EQ(build_table(raw, lax)->report.find("thermal_index"), nullptr);
+}
+
+TEST(EOSChecks, SharedReducedSFHoReportsItsThermalIndexNode) {
+  const std::string path = eos_test::shared_eos("SFHo_reduced_39r_39t_20y.h5");
+  REQUIRE_TABLE(path);
+  ReadOptions o;
+  o.sc_cs2 = Cs2Convention::relativistic;
+  auto t = load_table(path, o);
+  const CheckIssue* w = t->report.find("thermal_index");
+  ASSERT_NE(w, nullptr) << t->report.str();
+  EXPECT_EQ(w->count, 1u) << w->message;
+  // The node found by the tabulated-star study (TOV/test/test_tabulated_star.cpp): index 158 vs 5.0.
+  EXPECT_NE(w->message.find("(irho, iT, iYe) = (34, 0, 2)"), std::string::npos) << w->message;
+  EXPECT_NE(w->message.find("0.0001377 code"), std::string::npos) << w->message;
+  EXPECT_NE(w->message.find("index 158.3 against 4.969"), std::string::npos) << w->message;
 }

@@ -52,6 +52,12 @@ TEST(EOSThorn, StartupPublishesTheEos) {
   const auto& e = ctx.service<remnant::eos::EOS>("eos");
   ASSERT_TRUE(e.is_tabulated());
   EXPECT_EQ(e.tabulated()->table().lrho.n, 39);
+  // Its node (1.377e-4, T_min, Ye 0.0721) has a thermal-index jump (158 vs 5.0): a warning, which
+  // EOS::table_thermal_index_jump = 200 silences.
+  EXPECT_NE(e.tabulated()->table().report.find("thermal_index"), nullptr);
+  params.set("EOS", "table_thermal_index_jump", 200.0, {});
+  r.fns.at("EOS_Startup")(ctx);
+  EXPECT_EQ(ctx.service<remnant::eos::EOS>("eos").tabulated()->table().report.find("thermal_index"), nullptr);
 
   params.set("EOS", "table_file", std::string("/nonexistent/table.h5"), {});
   try {

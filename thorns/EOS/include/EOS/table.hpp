@@ -96,6 +96,10 @@ struct BuildOptions {
   // p may fall with rho (phase transitions, blend regions), but a fall by more than this factor
   // between neighbouring rho points is a corrupted value: an error.
   double max_pressure_drop = 10;
+  // Thermal-index warning (check_thermal_index.cpp): a T interval whose (dp/deps)_rho / rho exceeds
+  // thermal_index_max and thermal_index_jump times its neighbouring intervals' is counted.
+  double thermal_index_max = 10;
+  double thermal_index_jump = 10;
 };
 
 // Checks a raw table (throws TableError for errors, records warnings) and builds the internal
