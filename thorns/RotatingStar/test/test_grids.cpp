@@ -250,7 +250,7 @@ std::vector<remnant::analysis::StarDiagnostics> evolve(std::vector<std::string> 
 // rho_c(t) agrees, the 2D grid conserves J to its boundary flux, the 3D one to its discretisation
 // error. Over 1 ms at this resolution (run by hand: 280 and 355 steps) rho_c falls by 11 % (2D) and
 // 14 % (3D; the two differ by up to 3.6 % at 0.5 ms) and J drifts by -3.8e-4 (2D) and +6.5e-3 (3D):
-// 11 cells across r_e diffuse the star. The 2 ms comparison wants dx <= 0.5 (8x the 3D cost).
+// 11 cells across r_e diffuse the star. The 2 ms comparison (dx = 1 and 0.5, parfiles/rns_uniform_cart_3d.yaml): README.
 TEST(RotatingStarGrids, EvolutionIn2DCylindricalAnd3DCartesianAgrees) {
   const auto cyl = evolve({"Grid::ncells=[16,16,1]", "Grid::block_size=[8,8,1]", "Grid::xmax=[16,16,6.283185307179586]"}, 30);
   const auto car = evolve(cartesian_3d(32, 16), 30);
