@@ -26,47 +26,52 @@ struct RootStats {
 // instead of one more evaluation a tolerance step across the root to close the bracket. Not a
 // guarantee: the caller checks the result (recover.hpp) and solves again without it where needed.
 template <class Eval, class F>
-RootStats brent_root(F&& eval, Eval a, Eval b, double rel_tol, int max_iter, Eval& best, Eval& other,
+RootStats brent_root(F&& eval, Eval a_in, Eval b_in, double rel_tol, int max_iter, Eval& best, Eval& other,
                      double early_stop = 0) {
   constexpr double kEps = std::numeric_limits<double>::epsilon();
   RootStats st;
-  if (a.f == 0) return best = other = a, st.converged = true, st;
-  if (b.f == 0) return best = other = b, st.converged = true, st;
-  Eval c = a;
-  double d = b.x - a.x, e = d;
+  if (a_in.f == 0) return best = other = a_in, st.converged = true, st;
+  if (b_in.f == 0) return best = other = b_in, st.converged = true, st;
+  // The records stay where they are (72 bytes each): a, b, c point into three slots, of which b and c
+  // use at most two, so a new evaluation always has a free one. Same arithmetic as copying them.
+  Eval spare;
+  const Eval* a = &a_in;
+  const Eval* b = &b_in;
+  const Eval* c = a;
+  double d = b->x - a->x, e = d;
   for (int it = 0;; ++it) {
-    if ((b.f > 0) == (c.f > 0)) {  // keep the root between b and c
+    if ((b->f > 0) == (c->f > 0)) {  // keep the root between b and c
       c = a;
-      d = e = b.x - a.x;
+      d = e = b->x - a->x;
     }
-    if (std::abs(c.f) < std::abs(b.f)) {  // b is the best estimate
+    if (std::abs(c->f) < std::abs(b->f)) {  // b is the best estimate
       a = b, b = c, c = a;
     }
-    const double dx_rel = std::abs(c.x - b.x) / std::abs(b.x);
-    const double sensitivity = dx_rel > 0 ? b.rel_change(c) / dx_rel : 0.0;
+    const double dx_rel = std::abs(c->x - b->x) / std::abs(b->x);
+    const double sensitivity = dx_rel > 0 ? b->rel_change(*c) / dx_rel : 0.0;
     // A quarter: the bracket (not just the step) ends below rel_tol / 2 in every quantity.
-    const double tol = 2 * kEps * std::abs(b.x) + 0.25 * rel_tol * std::abs(b.x) / std::max(1.0, sensitivity);
-    const double m = 0.5 * (c.x - b.x);
-    if (std::abs(m) <= tol || b.f == 0) {
+    const double tol = 2 * kEps * std::abs(b->x) + 0.25 * rel_tol * std::abs(b->x) / std::max(1.0, sensitivity);
+    const double m = 0.5 * (c->x - b->x);
+    if (std::abs(m) <= tol || b->f == 0) {
       st.iterations = it;
       st.converged = true;
-      best = b, other = c;
+      best = *b, other = *c;
       return st;
     }
     if (it == max_iter) {
       st.iterations = it;
-      best = b, other = c;
+      best = *b, other = *c;
       return st;
     }
-    if (std::abs(e) >= tol && std::abs(a.f) > std::abs(b.f)) {
+    if (std::abs(e) >= tol && std::abs(a->f) > std::abs(b->f)) {
       double p, q;
-      const double s = b.f / a.f;
-      if (a.x == c.x) {  // secant
+      const double s = b->f / a->f;
+      if (a->x == c->x) {  // secant
         p = 2 * m * s;
         q = 1 - s;
       } else {  // inverse quadratic interpolation
-        const double qq = a.f / c.f, rr = b.f / c.f;
-        p = s * (2 * m * qq * (qq - rr) - (b.x - a.x) * (rr - 1));
+        const double qq = a->f / c->f, rr = b->f / c->f;
+        p = s * (2 * m * qq * (qq - rr) - (b->x - a->x) * (rr - 1));
         q = (qq - 1) * (rr - 1) * (s - 1);
       }
       if (p > 0) q = -q;
@@ -76,7 +81,7 @@ RootStats brent_root(F&& eval, Eval a, Eval b, double rel_tol, int max_iter, Eva
         if (early_stop > 0 && std::abs(step) <= early_stop * tol && std::abs(step) <= 1e-3 * std::abs(d)) {
           st.iterations = it;
           st.converged = st.early = true;
-          best = b, other = c;
+          best = *b, other = *c;
           return st;
         }
         e = d;
@@ -88,7 +93,12 @@ RootStats brent_root(F&& eval, Eval a, Eval b, double rel_tol, int max_iter, Eva
       d = e = m;
     }
     a = b;
-    b = eval(b.x + (std::abs(d) > tol ? d : (m > 0 ? tol : -tol)));
+    const double x_next = b->x + (std::abs(d) > tol ? d : (m > 0 ? tol : -tol));
+    Eval* slot = &spare;  // the slot neither b (now a) nor c uses
+    if (b != &a_in && c != &a_in) slot = &a_in;
+    else if (b != &b_in && c != &b_in) slot = &b_in;
+    *slot = eval(x_next);
+    b = slot;
   }
 }
 
