@@ -176,7 +176,9 @@ void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block&
     const int ext[3] = {used[0] && c != 0 ? b.n[0] + 1 : b.n[0], used[1] && c != 1 ? b.n[1] + 1 : b.n[1],
                         used[2] && c != 2 ? b.n[2] + 1 : b.n[2]};
     int id[3];
-    if (scheme == EmfScheme::uct_hll && !curvilinear && used[a] && used[bb]) {
+    // The vectorised Cartesian rows hard-code the MC edge slopes: other edge reconstructions
+    // (GRMHD::emf_reconstruction) take the general loop.
+    if (scheme == EmfScheme::uct_hll && edge_reconstruction == Reconstruction::mc && !curvilinear && used[a] && used[bb]) {
       for (id[2] = 0; id[2] < ext[2]; ++id[2])
         for (id[1] = 0; id[1] < ext[1]; ++id[1]) {
           id[0] = 0;

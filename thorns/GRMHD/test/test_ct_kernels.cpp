@@ -114,4 +114,68 @@ TEST(CtKernels, CartesianUctHllAndFaceRhsHaveTheBitsOfThePointwiseFormulas) {
   }
 }
 
+// The Cartesian rows are MC only: with another edge reconstruction the EMFs must be those of that
+// reconstruction (after the merge of the fast rows with GRMHD::emf_reconstruction the rows were taken
+// for every reconstruction, so ppm_ep's 3D runs silently used MC edges). Reference: the same
+// upwind formula with the face values reconstructed by `reconstruct` along the edge.
+double upwind_reference_with(Block& blk, int ct_group, int bface_group, int a, int b, const int* id, Reconstruction r) {
+  int lo[3] = {id[0], id[1], id[2]};
+  --lo[b];
+  auto ct = [&](int q, const int* at) { return blk.field(ct_group, q)(at[0], at[1], at[2]); };
+  const double ap = std::max(ct(kAlphaPlus, lo), ct(kAlphaPlus, id));
+  const double am = std::max(ct(kAlphaMinus, lo), ct(kAlphaMinus, id));
+  const double vl = 0.5 * (ct(kVtLeft, lo) + ct(kVtLeft, id));
+  const double vh = 0.5 * (ct(kVtRight, lo) + ct(kVtRight, id));
+  double q_store[6];
+  for (int m = 0; m < 6; ++m) {
+    int at[3] = {id[0], id[1], id[2]};
+    at[a] += m - 3;
+    q_store[m] = blk.field(bface_group, 0)(at[0], at[1], at[2]);
+  }
+  double left[1], right[1], scratch[ppm_scratch_size(0)];
+  reconstruct(r, q_store + 3, left, right, 0, scratch);
+  return hll_product_reference(ap, am, vl, vh, left[0], right[0]);
+}
+
+TEST(CtKernels, CartesianUctHllUsesTheChosenEdgeReconstruction) {
+  const VariableRegistry vars = test::kernel_registry();
+  const MhdGroups g = test::mhd_groups(vars);
+  constexpr int n = 6;
+  const std::unique_ptr<Block> block = test::kernel_block(vars, n);
+  Block& blk = *block;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int d = 0; d < 3; ++d) {
+    const std::size_t np = blk.points_per_component(g.ct[d]);
+    double* ct = blk.data(g.ct[d]);
+    for (int q = 0; q < kNumCt; ++q)
+      for (std::size_t i = 0; i < np; ++i) {
+        double v = u(rng);
+        if (q == kAlphaPlus || q == kAlphaMinus) v = std::abs(v) + 0.1;
+        ct[static_cast<std::size_t>(q) * np + i] = v;
+      }
+    double* bf = blk.data(g.bface[d]);
+    for (std::size_t i = 0; i < blk.size(g.bface[d]); ++i) bf[i] = u(rng);
+  }
+  for (Reconstruction r : {Reconstruction::ppm_ep, Reconstruction::ppm, Reconstruction::minmod}) {
+    edge_emfs(EmfScheme::uct_hll, g, blk, r);
+    double worst = 0, scale = 0;
+    for (int c = 0; c < 3; ++c) {
+      const int a = (c + 1) % 3, bb = (c + 2) % 3;
+      int id[3];
+      for (id[2] = 0; id[2] < n + (c != 2); ++id[2])
+        for (id[1] = 0; id[1] < n + (c != 1); ++id[1])
+          for (id[0] = 0; id[0] < n + (c != 0); ++id[0]) {
+            const double emf = -upwind_reference_with(blk, g.ct[a], g.bface[bb], a, bb, id, r) +
+                               upwind_reference_with(blk, g.ct[bb], g.bface[a], bb, a, id, r);
+            const double expect = emf * blk.face_factors(a)[id[a]] * blk.face_factors(bb)[id[bb]] *
+                                  blk.volume_weights(c)[id[c]] / blk.dx[c];
+            worst = std::max(worst, std::abs(blk.field(g.emf[c], 0)(id[0], id[1], id[2]) - expect));
+            scale = std::max(scale, std::abs(expect));
+          }
+    }
+    EXPECT_LE(worst, 1e-14 * scale) << "edge reconstruction " << int(r) << ": the EMFs are not those of that reconstruction";
+  }
+}
+
 }  // namespace
