@@ -27,24 +27,36 @@ double hll_product_reference(double ap, double am, double vl, double vh, double 
   return (ap * vl * bl + am * vh * bh - ap * am * (bh - bl)) / w;
 }
 
-// -/+ HLL_a(vt^a B^b) of the edge at id from the two a-faces adjacent along b and B^b along a.
-double upwind_reference(Block& blk, int ct_group, int bface_group, int a, int b, const int* id) {
+// What the upwind EMF reads at the edge at id: the HLL speeds and transverse velocities of the two
+// a-faces adjacent along b, and B^b at the six faces along a around the edge (line[m]: offset m - 3).
+struct EdgeInputs {
+  double ap, am, vl, vh;
+  double line[6];
+};
+EdgeInputs edge_inputs(Block& blk, int ct_group, int bface_group, int a, int b, const int* id) {
   int lo[3] = {id[0], id[1], id[2]};
   --lo[b];
   auto ct = [&](int q, const int* at) { return blk.field(ct_group, q)(at[0], at[1], at[2]); };
-  const double ap = std::max(ct(kAlphaPlus, lo), ct(kAlphaPlus, id));
-  const double am = std::max(ct(kAlphaMinus, lo), ct(kAlphaMinus, id));
-  const double vl = 0.5 * (ct(kVtLeft, lo) + ct(kVtLeft, id));
-  const double vh = 0.5 * (ct(kVtRight, lo) + ct(kVtRight, id));
-  double q[4];
-  for (int m = 0; m < 4; ++m) {
+  EdgeInputs e;
+  e.ap = std::max(ct(kAlphaPlus, lo), ct(kAlphaPlus, id));
+  e.am = std::max(ct(kAlphaMinus, lo), ct(kAlphaMinus, id));
+  e.vl = 0.5 * (ct(kVtLeft, lo) + ct(kVtLeft, id));
+  e.vh = 0.5 * (ct(kVtRight, lo) + ct(kVtRight, id));
+  for (int m = 0; m < 6; ++m) {
     int at[3] = {id[0], id[1], id[2]};
-    at[a] += m - 2;
-    q[m] = blk.field(bface_group, 0)(at[0], at[1], at[2]);
+    at[a] += m - 3;
+    e.line[m] = blk.field(bface_group, 0)(at[0], at[1], at[2]);
   }
+  return e;
+}
+
+// -/+ HLL_a(vt^a B^b) of the edge at id with the MC slopes written out.
+double upwind_reference(Block& blk, int ct_group, int bface_group, int a, int b, const int* id) {
+  const EdgeInputs e = edge_inputs(blk, ct_group, bface_group, a, b, id);
+  const double* q = e.line + 1;  // offsets -2 .. 1
   const double bl = q[1] + 0.5 * detail::mc_slope(q[1] - q[0], q[2] - q[1]);
   const double bh = q[2] - 0.5 * detail::mc_slope(q[2] - q[1], q[3] - q[2]);
-  return hll_product_reference(ap, am, vl, vh, bl, bh);
+  return hll_product_reference(e.ap, e.am, e.vl, e.vh, bl, bh);
 }
 
 TEST(CtKernels, CartesianUctHllAndFaceRhsHaveTheBitsOfThePointwiseFormulas) {
@@ -119,22 +131,10 @@ TEST(CtKernels, CartesianUctHllAndFaceRhsHaveTheBitsOfThePointwiseFormulas) {
 // for every reconstruction, so ppm_ep's 3D runs silently used MC edges). Reference: the same
 // upwind formula with the face values reconstructed by `reconstruct` along the edge.
 double upwind_reference_with(Block& blk, int ct_group, int bface_group, int a, int b, const int* id, Reconstruction r) {
-  int lo[3] = {id[0], id[1], id[2]};
-  --lo[b];
-  auto ct = [&](int q, const int* at) { return blk.field(ct_group, q)(at[0], at[1], at[2]); };
-  const double ap = std::max(ct(kAlphaPlus, lo), ct(kAlphaPlus, id));
-  const double am = std::max(ct(kAlphaMinus, lo), ct(kAlphaMinus, id));
-  const double vl = 0.5 * (ct(kVtLeft, lo) + ct(kVtLeft, id));
-  const double vh = 0.5 * (ct(kVtRight, lo) + ct(kVtRight, id));
-  double q_store[6];
-  for (int m = 0; m < 6; ++m) {
-    int at[3] = {id[0], id[1], id[2]};
-    at[a] += m - 3;
-    q_store[m] = blk.field(bface_group, 0)(at[0], at[1], at[2]);
-  }
+  const EdgeInputs e = edge_inputs(blk, ct_group, bface_group, a, b, id);
   double left[1], right[1], scratch[ppm_scratch_size(0)];
-  reconstruct(r, q_store + 3, left, right, 0, scratch);
-  return hll_product_reference(ap, am, vl, vh, left[0], right[0]);
+  reconstruct(r, e.line + 3, left, right, 0, scratch);
+  return hll_product_reference(e.ap, e.am, e.vl, e.vh, left[0], right[0]);
 }
 
 TEST(CtKernels, CartesianUctHllUsesTheChosenEdgeReconstruction) {
