@@ -67,6 +67,14 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
   } else {
     *src = read_remnant_volume(files, mirrors, parity != "vector");
   }
+  // The remnant's centre onto the grid's origin (after unfolding: mirrors are the data's x^d = 0).
+  const auto& centre = ctx.param<std::vector<double>>("HandOff", "centre");
+  if (centre[0] != 0 || centre[1] != 0 || centre[2] != 0) {
+    for (auto& L : src->levels)
+      for (std::size_t d = 0; d < 3; ++d) L.origin[d] -= centre[d];
+    notes.push_back("the data's point (" + format_number(centre[0], 6) + ", " + format_number(centre[1], 6) + ", " +
+                    format_number(centre[2], 6) + ") is placed at the grid's origin (HandOff::centre)");
+  }
   check_magnetic_field(ctx, *src, notes);
   MissingPolicy policy;
   policy.from_eos = ctx.param<std::string>("HandOff", "missing_variables") == "from_eos";
