@@ -3,6 +3,7 @@
 #include <glob.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <limits>
@@ -92,6 +93,36 @@ bool ghost_points_written(const std::string& dump, const std::string& path) {
   const std::string name = path.substr(path.find_last_of('/') == std::string::npos ? 0 : path.find_last_of('/') + 1);
   const bool slice_3d = name.find(".xyz.") != std::string::npos;
   return dump_flag(dump, slice_3d ? "carpetiohdf5::out3d_ghosts" : "carpetiohdf5::output_ghost_points") != 0;
+}
+
+// Carpet's `active` attribute, a bboxset written as text ("bboxset<CCTK_INT4,3>(set<bbox>:{([lo]:
+// [hi]:[stride]/...),...},...)", indices in units of the finest level's spacing), as inclusive
+// boxes of component-local indices (the level index less iorigin); false when not of that form.
+bool parse_active(const std::string& text, const std::vector<long long>& iorigin, std::vector<std::array<int, 6>>& boxes) {
+  boxes.clear();
+  if (text.find("set<bbox>:{}") != std::string::npos) return true;  // the component owns no point
+  std::size_t pos = 0;
+  while ((pos = text.find("([", pos)) != std::string::npos) {
+    long long v[9];
+    char sep[9];
+    std::istringstream in(text.substr(pos + 2));
+    bool ok = true;
+    for (int q = 0; q < 9 && ok; ++q) {
+      ok = static_cast<bool>(in >> v[q] >> sep[q]);
+      if (ok && q % 3 == 2 && q < 8) ok = in.get() == ':' && in.get() == '[';  // "]:[" between vectors
+    }
+    if (!ok) return false;
+    std::array<int, 6> b{};
+    for (std::size_t a = 0; a < 3; ++a) {
+      const long long stride = v[6 + a];
+      if (stride <= 0 || v[a] % stride != 0 || v[3 + a] % stride != 0) return false;
+      b[a] = static_cast<int>(v[a] / stride - iorigin[a]);
+      b[3 + a] = static_cast<int>(v[3 + a] / stride - iorigin[a]);
+    }
+    boxes.push_back(b);
+    pos += 2;
+  }
+  return !boxes.empty();
 }
 
 std::string join_levels(const std::set<int>& s) {
@@ -287,6 +318,11 @@ SourceData read_carpet(const CarpetOptions& opt) {
         const auto bbox = h5::attr_ints(d, "cctk_bbox", r.file, r.name);
         if (bbox.size() == 6)
           for (std::size_t q = 0; q < 6; ++q) comp.outer[q] = static_cast<int>(bbox[q]);
+      }
+      if (h5::has_attr(d, "active") && h5::has_attr(d, "iorigin")) {
+        const auto io = h5::attr_ints(d, "iorigin", r.file, r.name);
+        comp.has_active = io.size() == 3 && parse_active(h5::attr_string(d, "active", r.file, r.name), io, comp.active);
+        out.active_regions = out.active_regions || comp.has_active;
       }
       comp.where = r.file + ": " + r.name;
       builder.add(v, std::move(comp), std::move(data));

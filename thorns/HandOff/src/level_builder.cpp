@@ -141,14 +141,20 @@ std::vector<SourceLevel> LevelBuilder::build() const {
           };
           // A lower face reaching below a reflection plane: its symmetry ghosts go by position.
           const bool symmetry_face = reflection_[a] && p.c.origin[a] < -kLatticeTolerance * L.delta[a];
-          first[a] = symmetry_face ? 0 : strip(0, at_lower);
-          last[a] = p.c.n[a] - 1 - strip(1, at_upper);
+          first[a] = symmetry_face || p.c.has_active ? 0 : strip(0, at_lower);
+          last[a] = p.c.n[a] - 1 - (p.c.has_active ? 0 : strip(1, at_upper));
         }
+        auto owned = [&p](const std::array<int, 3>& m) {
+          if (!p.c.has_active) return true;
+          for (const auto& b : p.c.active)
+            if (m[0] >= b[0] && m[1] >= b[1] && m[2] >= b[2] && m[0] <= b[3] && m[1] <= b[4] && m[2] <= b[5]) return true;
+          return false;
+        };
         for (int k = first[2]; k <= last[2]; ++k)
           for (int j = first[1]; j <= last[1]; ++j)
             for (int i = first[0]; i <= last[0]; ++i) {
               const std::array<int, 3> ijk{i, j, k};
-              bool keep = true;
+              bool keep = owned(ijk);
               for (std::size_t a = 0; a < 3; ++a)
                 if (reflection_[a] && p.c.origin[a] + ijk[a] * L.delta[a] < -kLatticeTolerance * L.delta[a]) keep = false;
               if (!keep) continue;

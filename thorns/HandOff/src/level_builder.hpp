@@ -18,6 +18,11 @@ struct Component {
   std::array<int, 3> ghosts{0, 0, 0};  // removed on faces inside the domain (cctk_nghostzones)
   std::array<int, 6> outer{-1, -1, -1, -1, -1, -1};  // cctk_bbox: 1 on the grid's outer faces, -1 unknown
   std::string where;                   // "file: dataset" for messages
+  // Carpet's `active` attribute: the component's own points (owned, less outer and symmetry
+  // boundaries and buffer zones), as inclusive component-local index boxes [lo x, y, z, hi x, y, z].
+  // When present it replaces the ghost and buffer rules (no box: the component owns no point).
+  bool has_active = false;
+  std::vector<std::array<int, 6>> active;
 };
 
 class LevelBuilder {

@@ -64,6 +64,9 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
     o.buffer_zones = static_cast<int>(ctx.param<std::int64_t>("HandOff", "buffer_zones"));
     o.axial_magnetic_field = parity != "vector";  // auto: the Einstein Toolkit's Bvec is a pseudo-vector
     *src = read_carpet(o);
+    if (src->active_regions)
+      notes.push_back("each component's own points are its `active` region (Carpet's attribute): ghost, buffer and symmetry "
+                      "points are dropped, HandOff::buffer_zones is not used for such components");
   } else {
     *src = read_remnant_volume(files, mirrors, parity != "vector");
   }

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <stdexcept>
 
 namespace remnant::handoff::synthetic {
@@ -117,6 +118,19 @@ std::vector<std::string> write_synthetic_carpet(const std::string& dir, const Sy
               bbox[2 * a + 1] = ihi[a] == L.nodes[a] - 1 && l == 0 ? 1 : 0;
             }
             attr(d, "cctk_bbox", H5T_NATIVE_INT, bbox, 6);
+          }
+          if (spec.write_active) {  // as CarpetIOHDF5: a bboxset in units of the finest level's spacing
+            const int st = 1 << (spec.levels.size() - 1 - l);
+            std::string box = "bboxset<CCTK_INT4,3>(set<bbox>:{([";
+            for (std::size_t a = 0; a < 3; ++a) box += std::to_string(ilo[a] * st) + (a < 2 ? "," : "]:[");
+            for (std::size_t a = 0; a < 3; ++a) box += std::to_string(ihi[a] * st) + (a < 2 ? "," : "]:[");
+            for (std::size_t a = 0; a < 3; ++a) box += std::to_string(st) + (a < 2 ? "," : "]/...)},stride:[1,1,1],offset:[0,0,0])");
+            const hid_t t = H5Tcopy(H5T_C_S1);
+            H5Tset_size(t, box.size());
+            const hid_t sc = H5Screate(H5S_SCALAR);
+            const hid_t a = H5Acreate2(d, "active", t, sc, H5P_DEFAULT, H5P_DEFAULT);
+            H5Awrite(a, t, box.data());
+            H5Aclose(a), H5Sclose(sc), H5Tclose(t);
           }
           attr(d, "origin", H5T_NATIVE_DOUBLE, origin, 3);
           attr(d, "delta", H5T_NATIVE_DOUBLE, delta, 3);

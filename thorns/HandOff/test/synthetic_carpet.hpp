@@ -39,6 +39,7 @@ struct SyntheticCarpet {
   std::string ghosts_parameter = "output_ghost_points";  // the one set to "no" (out3D_ghosts: 3D slice output)
   std::string extra_parameters;  // more lines of the parameter dump
   bool write_bbox = true;         // the cctk_bbox attribute (1 on the grid's outer and symmetry faces)
+  bool write_active = false;      // Carpet's `active` attribute: the component's points less ghosts and buffers
   std::string stem = "data";
 };
 

@@ -89,8 +89,10 @@ TEST(CarpetReader, CanonicalNames) {
   EXPECT_EQ(reflection_parity("vel[2]", 2, true), -1.0);
 }
 
-void expect_exact_octant(const Files& files) {
-  const SourceData src = read_carpet(files.options());
+void expect_exact_octant(const Files& files, int buffer_zones = -1) {
+  CarpetOptions o = files.options();
+  if (buffer_zones >= 0) o.buffer_zones = buffer_zones;
+  const SourceData src = read_carpet(o);
   ASSERT_EQ(src.levels.size(), 2u);
   EXPECT_EQ(src.iteration, 256);  // the latest that rho, vel[2] and gxz all have on every level (not 384)
   EXPECT_TRUE(src.reflection[0] && src.reflection[1] && src.reflection[2]);
@@ -141,6 +143,21 @@ TEST(CarpetReader, SliceOutputWithoutGhostPoints) {
     s.ghosts_parameter = "out3D_ghosts";
     s.extra_parameters = "CarpetIOHDF5::output_ghost_points = \"yes\"\n";
   }));
+}
+
+// Carpet's `active` attribute (CarpetIOHDF5 writes it since 2010; the kuibit TOV run and the aurel
+// fixtures have it) marks each component's own points: without ghosts, outer and symmetry boundary
+// points and Carpet's buffer zones (use_buffer_zones: 9 points per refined face in the kuibit run,
+// read as data with HandOff::buffer_zones = 0). Read with HandOff::buffer_zones = 0 the data must be
+// exact: the buffer points (value + 0.5) never read, with and without ghost points in the files.
+TEST(CarpetReader, ActiveRegionsDropBufferZones) {
+  expect_exact_octant(Files([](synthetic::SyntheticCarpet& s) { s.write_active = true; }), 0);
+  expect_exact_octant(Files([](synthetic::SyntheticCarpet& s) {
+    s.write_active = true;
+    s.ghosts_written = false;
+    s.stem = "data.xyz";
+    s.ghosts_parameter = "out3D_ghosts";
+  }), 0);
 }
 
 // Files without cctk_bbox: the outer boundary is the coarsest level's edge.

@@ -38,6 +38,7 @@ struct SourceData {
   std::map<std::string, std::string> file_of;  // variable -> a file that holds it (messages)
   std::array<bool, 3> reflection{false, false, false};  // unfolded mirror planes x^d = 0
   bool ghosts_in_files = true;             // Carpet: CarpetIOHDF5::output_ghost_points
+  bool active_regions = false;             // Carpet: components' `active` attributes used (not buffer_zones)
   bool has_metric = false, has_lapse = false;  // the data gave gamma_ij, alpha (kept: gamma^(1/3), alp)
   // Nodal weights (cell volume of a node) are delta^3 on the level that owns the point.
   bool has(const std::string& v) const { return !levels.empty() && levels.front().fields.count(v) != 0; }
