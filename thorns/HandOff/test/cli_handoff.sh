@@ -1,7 +1,8 @@
 #!/bin/bash
 # End to end on the command line: remnant-handoff-testdata writes BU0 as 3D Carpet data, remnant runs
 # parfiles/handoff_tov_cyl_2d.yaml on it (hand-off only), the report and the profiles are written,
-# and utils/plot_handoff reads the profiles; a wrong file pattern fails with a message naming it.
+# and utils/plot_handoff reads the profiles; the report's 3D rest mass equals tools/carpet_check.py's
+# independent sum over the files to 1e-12; a wrong file pattern fails with a message naming it.
 # usage: cli_handoff.sh REMNANT_EXE TESTDATA_EXE SOURCE_DIR
 set -u
 exe=$1 tool=$2 src=$3
@@ -16,8 +17,19 @@ grep -q "^imported_rest_mass" out/handoff_report.txt || fail "no report"
 grep -q "HandOff: note: no HydroBase::Y_e" run.log || fail "the missing Ye is not noted in the log"
 python3 "$src/utils/plot_handoff" --no-plot out/handoff_profiles.tsv > plot.log 2>&1 || fail "plot_handoff: $(cat plot.log)"
 grep -q "^line 0: 48 cells" plot.log && grep -q "^line 1: 48 cells" plot.log || fail "plot_handoff: $(cat plot.log)"
+# The 3D rest mass against an independent reader (tools/carpet_check.py: h5py, no Remnant code).
+if /usr/bin/python3 -c "import h5py, numpy" 2> /dev/null; then
+  /usr/bin/python3 "$src/thorns/HandOff/tools/carpet_check.py" sum 'handoff_data/tov3d.file_*.h5' --mirrors xyz --buffer-zones 2 \
+    > sum.log 2>&1 || fail "carpet_check.py: $(cat sum.log)"
+  m_py=$(sed -n 's/.*3D rest mass \([^ ]*\).*/\1/p' sum.log)
+  m_cpp=$(awk '$1 == "source_rest_mass" {print $2}' out/handoff_report.txt)
+  awk -v a="$m_py" -v b="$m_cpp" 'BEGIN { d = a / b - 1; exit !(d < 1e-12 && d > -1e-12) }' ||
+    fail "3D rest mass: carpet_check.py $m_py, the report $m_cpp"
+else
+  echo "note: /usr/bin/python3 without h5py: the independent rest-mass sum is skipped"
+fi
 if "$exe" "$src/parfiles/handoff_tov_cyl_2d.yaml" MoL::final_time=0 Flesh::out_dir=out2 'HandOff::files=[nowhere/*.h5]' > bad.log 2>&1; then
   fail "a pattern that matches nothing did not fail"
 fi
 grep -q "nowhere/\*.h5" bad.log || fail "the error does not name the pattern: $(tail -3 bad.log)"
-echo "ok: $(grep '^normalisation' out/handoff_report.txt)"
+echo "ok: $(grep '^normalisation' out/handoff_report.txt); 3D rest mass ${m_cpp:-} (carpet_check.py ${m_py:-skipped})"
