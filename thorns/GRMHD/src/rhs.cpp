@@ -48,7 +48,7 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
       idx[c2] = ic;
       const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
       const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
-      gather_line(src, nullptr, base, stride, n, ng, L);
+      gather_line<E>(src, nullptr, base, stride, n, ng, L);
       for (int q = 0; q < kNumRecHydro; ++q)
         if (reconstructed_slot<E>(q)) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
       if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
