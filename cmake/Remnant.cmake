@@ -214,6 +214,15 @@ function(_remnant_link_test_thorns target name)
   endforeach()
 endfunction()
 
+# remnant_test_needs(<Name> <targets...>): programs that tests labelled <Name> run besides test_<Name>
+# (a second MPI test program, a benchmark, a command-line tool). `--target test_<Name>` builds them,
+# so that a partial build passes its thorn's label.
+function(remnant_test_needs name)
+  if(TARGET test_${name})
+    add_dependencies(test_${name} ${ARGN})
+  endif()
+endfunction()
+
 # remnant_thorn_bench(<Name> SOURCES <files...> [LIBS ...]): a Google Benchmark program bench_<Name>.
 function(remnant_thorn_bench name)
   if(NOT REMNANT_BUILD_BENCHMARKS)
@@ -234,6 +243,7 @@ function(remnant_thorn_bench name)
   if(REMNANT_BUILD_TESTS)
     add_test(NAME bench.${name}.smoke COMMAND ${target} --benchmark_min_time=0.0001)
     set_tests_properties(bench.${name}.smoke PROPERTIES LABELS "bench;${name}" TIMEOUT 300)
+    remnant_test_needs(${name} ${target})
   endif()
 endfunction()
 

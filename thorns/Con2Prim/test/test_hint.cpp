@@ -56,9 +56,9 @@ Settings settings(Method m) {
   return s;
 }
 
-}  // namespace
-
-TEST(Con2PrimHint, AnyHintFindsTheUnhintedRootOnTheRhoTPlaneOfBothTables) {
+// f(table, eos) for each shared table; a table missing from ../shared/eos is skipped with a message.
+template <class F>
+void for_each_table(F&& f) {
   for (const char* table : kTables) {
     const std::string path = c2p_test::shared_eos(table);
     if (!std::filesystem::exists(path)) {
@@ -66,36 +66,45 @@ TEST(Con2PrimHint, AnyHintFindsTheUnhintedRootOnTheRhoTPlaneOfBothTables) {
       continue;
     }
     const eos::Tabulated<eos::CountCalls> e(eos::load_table(path));
-    const eos::Bounds& b = e.bounds();
+    f(table, e);
+  }
+}
+
+// f(state, T) for the n x n states of the table's rho-T plane (log-spaced cell centres, rho fastest):
+// Ye 0.1, flat metric, moving and magnetised.
+template <class F>
+void for_each_plane_state(const eos::Tabulated<eos::CountCalls>& e, int n, F&& f) {
+  const eos::Bounds& b = e.bounds();
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double rho = b.rho_min * std::pow(b.rho_max / b.rho_min, (i + 0.5) / n);
+      const double T = b.T_min * std::pow(b.T_max / b.T_min, (j + 0.5) / n);
+      f(make_state(e, Metric3::flat(), rho, T, 0.1, 2.0, 1e-3, {0.6, 0.64, 0.48}, {-0.6, -0.64, -0.48}), T);
+    }
+}
+
+}  // namespace
+
+TEST(Con2PrimHint, AnyHintFindsTheUnhintedRootOnTheRhoTPlaneOfBothTables) {
+  for_each_table([](const char* table, const eos::Tabulated<eos::CountCalls>& e) {
     const Metric3 g = Metric3::flat();
     c2p_test::Randomiser r(7);
     for (Method m : {Method::kastaun, Method::palenzuela}) {
       Agreement a;
-      const int n = 24;
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          const double rho = b.rho_min * std::pow(b.rho_max / b.rho_min, (i + 0.5) / n);
-          const double T = b.T_min * std::pow(b.T_max / b.T_min, (j + 0.5) / n);
-          const Primitives orig = make_state(e, g, rho, T, 0.1, 2.0, 1e-3, {0.6, 0.64, 0.48}, {-0.6, -0.64, -0.48});
-          for (double h : hints_for(T, b, r)) compare(e, settings(m), g, orig, h, a);
-        }
+      for_each_plane_state(e, 24, [&](const Primitives& orig, double T) {
+        for (double h : hints_for(T, e.bounds(), r)) compare(e, settings(m), g, orig, h, a);
+      });
       std::printf("[ %s %s ] %d hinted recoveries, %d compared (both ok), worst difference %.2e\n", table,
                   to_string(m), a.states, a.compared, a.worst);
       EXPECT_EQ(a.status_differs, 0) << table << " " << to_string(m);
       EXPECT_GT(a.compared, a.states / 2) << table;
       EXPECT_LE(a.worst, 5e-9) << table << " " << to_string(m);  // the root tolerance
     }
-  }
+  });
 }
 
 TEST(Con2PrimHint, AnyHintFindsTheUnhintedRootOnFuzzStates) {
-  for (const char* table : kTables) {
-    const std::string path = c2p_test::shared_eos(table);
-    if (!std::filesystem::exists(path)) {
-      std::printf("REMNANT_TEST_SKIPPED: no table %s\n", path.c_str());
-      continue;
-    }
-    const eos::Tabulated<eos::CountCalls> e(eos::load_table(path));
+  for_each_table([](const char* table, const eos::Tabulated<eos::CountCalls>& e) {
     const eos::Bounds& b = e.bounds();
     c2p_test::Randomiser r(11);
     Agreement a;
@@ -112,21 +121,14 @@ TEST(Con2PrimHint, AnyHintFindsTheUnhintedRootOnFuzzStates) {
                 a.compared, a.worst);
     EXPECT_EQ(a.status_differs, 0) << table;
     EXPECT_LE(a.worst, 5e-9) << table;
-  }
+  });
 }
 
 TEST(Con2PrimHint, HintNearTheAnswerSavesTableCallsOnBothTables) {
   // Measured (40 x 40 rho-T plane, hint within 5 %): SFHo 13.88 -> 9.67 (Kastaun), 21.99 -> 16.21
   // (Palenzuela); LS220 31.78 -> 28.29, 39.19 -> 33.17. The first evaluation's hunt and bisection (end nodes plus
   // about 5 reads on 39 T nodes) become one read of the hinted interval.
-  for (const char* table : kTables) {
-    const std::string path = c2p_test::shared_eos(table);
-    if (!std::filesystem::exists(path)) {
-      std::printf("REMNANT_TEST_SKIPPED: no table %s\n", path.c_str());
-      continue;
-    }
-    const eos::Tabulated<eos::CountCalls> e(eos::load_table(path));
-    const eos::Bounds& b = e.bounds();
+  for_each_table([](const char* table, const eos::Tabulated<eos::CountCalls>& e) {
     const Metric3 g = Metric3::flat();
     remnant::atmosphere::Atmosphere atm;
     atm.rho_thr = 1e-300;
@@ -134,21 +136,17 @@ TEST(Con2PrimHint, HintNearTheAnswerSavesTableCallsOnBothTables) {
     for (Method m : {Method::kastaun, Method::palenzuela}) {
       double calls[2] = {0, 0};
       const int n = 40;
-      for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i) {
-          const double rho = b.rho_min * std::pow(b.rho_max / b.rho_min, (i + 0.5) / n);
-          const double T = b.T_min * std::pow(b.T_max / b.T_min, (j + 0.5) / n);
-          const Primitives orig = make_state(e, g, rho, T, 0.1, 2.0, 1e-3, {0.6, 0.64, 0.48}, {-0.6, -0.64, -0.48});
-          for (int hinted = 0; hinted < 2; ++hinted) {
-            Conserved c = prim_to_cons(orig, g);
-            Primitives p;
-            const double h = hinted ? T * std::exp(r.uniform(-0.05, 0.05)) : 0.0;
-            calls[hinted] += double(recover(e, settings(m), atm, g, c, p, h).eos_calls) / (n * n);
-          }
+      for_each_plane_state(e, n, [&](const Primitives& orig, double T) {
+        for (int hinted = 0; hinted < 2; ++hinted) {
+          Conserved c = prim_to_cons(orig, g);
+          Primitives p;
+          const double h = hinted ? T * std::exp(r.uniform(-0.05, 0.05)) : 0.0;
+          calls[hinted] += double(recover(e, settings(m), atm, g, c, p, h).eos_calls) / (n * n);
         }
+      });
       std::printf("[ %s %s ] table calls per recovery: %.2f unhinted, %.2f with a hint within 5 %%\n", table,
                   to_string(m), calls[0], calls[1]);
       EXPECT_LE(calls[1], calls[0] - 3.0) << table << " " << to_string(m);
     }
-  }
+  });
 }

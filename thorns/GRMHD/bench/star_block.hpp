@@ -3,9 +3,7 @@
 // and primitives filled everywhere (ghosts too: the star is static, no exchange needed), for kernel
 // benchmarks: a full RK3 step is 3 x (con2prim, fluxes, divergence + sources, RK update).
 #include <cstdint>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -17,8 +15,8 @@
 #include "GRMHD/valencia.hpp"
 #include "HydroBase/sweeps.hpp"
 #include "remnant/grid.hpp"
-#include "remnant/thorn_spec.hpp"
 #include "HydroBase/magnetic_field.hpp"
+#include "../test/kernel_block.hpp"  // the block and its groups, as the kernel tests build them
 #include "constrained_transport.hpp"
 #include "groups.hpp"
 #include "mhd_fluxes.hpp"
@@ -31,37 +29,16 @@ class StarBlock {
  public:
   // magnetic: a poloidal field (A_phi = A0 varpi^2 (1 - r^2/49)^3, b^2 / 2p ~ 1e-2 at the centre)
   // evolved by constrained transport as GRMHD_RHS_MHD does (without the Grid's edge correction).
-  StarBlock(eos::EOS eos, int n, double extent, bool magnetic = false) : eos_(std::move(eos)), magnetic_(magnetic) {
-    // The groups as the thorns declare them (thorn.yaml), not a copy of their layout.
-    for (const char* thorn : {"HydroBase", "Spacetime", "GRMHD"}) {
-      const std::string path = std::string(REMNANT_SOURCE_DIR) + "/thorns/" + thorn + "/thorn.yaml";
-      std::ifstream in(path);
-      std::stringstream text;
-      text << in.rdbuf();
-      for (VariableGroupSpec spec : parse_thorn_spec(text.str(), path).variables) {
-        spec.thorn = thorn;
-        vars_.add(spec);
-      }
-    }
-    g_.cons = vars_.find("HydroBase::cons");
-    g_.cons_rhs = vars_.find("HydroBase::cons_rhs");
-    g_.prim = vars_.find("HydroBase::prim");
-    g_.metric = vars_.find("Spacetime::metric");
-    g_.flux = {vars_.find("GRMHD::flux_x"), vars_.find("GRMHD::flux_y"), vars_.find("GRMHD::flux_z")};
+  StarBlock(eos::EOS eos, int n, double extent, bool magnetic = false)
+      : eos_(std::move(eos)),
+        vars_(test::kernel_registry()),  // the groups as the thorns declare them (thorn.yaml)
+        g_(test::hydro_groups(vars_)),
+        mg_(test::mhd_groups(vars_)),
+        magnetic_(magnetic) {
     matter_ = {g_.cons, g_.prim, g_.metric};
-    for (int d = 0; d < 3; ++d) {
-      const std::string k = std::to_string(d + 1), xyz(1, static_cast<char>('x' + d));
-      mg_.bface[d] = vars_.find("HydroBase::Bface" + k);
-      mg_.bface_rhs[d] = vars_.find("HydroBase::Bface" + k + "_rhs");
-      mg_.ct[d] = vars_.find("GRMHD::ct_" + xyz);
-      mg_.emf[d] = vars_.find("GRMHD::emf_" + xyz);
-    }
-    mg_.bvec = vars_.find("HydroBase::Bvec");
     if (magnetic_) matter_.bvec = mg_.bvec;
     const double dx = extent / n;
-    block_ = std::make_unique<Block>(0, 0, std::array<std::int64_t, 3>{0, 0, 0}, std::array<int, 3>{n, n, n},
-                                     std::array<int, 3>{3, 3, 3}, std::array<double, 3>{0, 0, 0},
-                                     std::array<double, 3>{dx, dx, dx}, vars_);
+    block_ = test::kernel_block(vars_, n, {dx, dx, dx});
     atmosphere::AtmosphereConfig ac;
     ac.rho_thr = 1e-10;
     atm_ = eos_.visit([&](const auto& e) { return atmosphere::make_atmosphere(e, ac); });

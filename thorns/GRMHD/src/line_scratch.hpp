@@ -17,13 +17,18 @@ enum class MetricFaceInterpolation { linear, cubic };
 
 // The reconstructed variables every sweep shares, in this order; the MHD sweep appends its two
 // transverse field components. kRecPress: the pressure beside the temperature of a non-ideal-gas EOS
-// (face_thermo.hpp); the ideal gas's thermal variable is the pressure, so it skips that slot
-// (reconstructed_slot).
+// (face_thermo.hpp).
 enum LineVariable : int { kRecRho = 0, kRecWv1 = 1, kRecThermal = 4, kRecYe = 5, kRecPress = 6 };
 inline constexpr int kNumRecHydro = 7;
+// The slots a sweep with EOS E gathers and reconstructs: the hydro slots 0 .. kHydroSlots<E> - 1, then
+// the extra ones. The ideal gas's thermal variable is the pressure, so its list stops before
+// kRecPress, the last hydro slot.
+static_assert(kRecPress == kNumRecHydro - 1, "the slot the ideal gas leaves out is the last hydro slot");
+template <class E>
+inline constexpr int kHydroSlots = reconstructs_pressure<E> ? kRecPress : kNumRecHydro;
 template <class E>
 inline constexpr bool reconstructed_slot(int q) {
-  return !(reconstructs_pressure<E> && q == kRecPress);
+  return q < kHydroSlots<E> || q >= kNumRecHydro;
 }
 
 // The metric at the faces of a line (f = 0..n): what the face states and fluxes need of it.
@@ -132,9 +137,10 @@ struct LineSources {
 };
 
 // Copies the line at offset `base` (stride `stride`, n cells and ng ghosts each side) into L:
-// rho, W v^1..3, thermal, Ye, p into cell[0..6] (set_face_metric reads the metric in place); the NumRec - 7
-// fields of `extra` (the MHD sweep's transverse B; nullptr for the hydro sweep) into cell[7..], read at the same points.
-template <int NumRec, int NumFlux>
+// rho, W v^1..3, thermal, Ye and, where E reconstructs it, p into cell[0..6] (set_face_metric reads
+// the metric in place); the NumRec - 7 fields of `extra` (the MHD sweep's transverse B; nullptr for
+// the hydro sweep) into cell[7..], read at the same points.
+template <class E, int NumRec, int NumFlux>
 inline void gather_line(const LineSources& src, const double* const* extra, std::ptrdiff_t base, std::ptrdiff_t stride,
                         int n, int ng, LineScratch<NumRec, NumFlux>& L) {
   constexpr int NumExtra = NumRec - kNumRecHydro;
@@ -146,7 +152,7 @@ inline void gather_line(const LineSources& src, const double* const* extra, std:
   const double* pv2 = src.vel[2] + base;
   const double* pth = src.thermal + base;
   const double* pye = src.ye + base;
-  const double* ppr = src.press + base;
+  [[maybe_unused]] const double* ppr = src.press + base;  // read only where E reconstructs p
   for (int m = -ng; m < n + ng; ++m) {
     const std::ptrdiff_t o = m * stride;
     const double W = pw[o];
@@ -156,7 +162,7 @@ inline void gather_line(const LineSources& src, const double* const* extra, std:
     L.cell[3][m] = W * pv2[o];
     L.cell[4][m] = pth[o];
     L.cell[5][m] = pye[o];
-    L.cell[6][m] = ppr[o];
+    if constexpr (reconstructed_slot<E>(kRecPress)) L.cell[kRecPress][m] = ppr[o];
   }
   for (int e = 0; e < NumExtra; ++e) {
     const double* px = extra[e] + base;

@@ -98,7 +98,7 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
       idx[c2] = ic;
       const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
       const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
-      gather_line(src, transverse_field, base, stride, n, ng, L);
+      gather_line<E>(src, transverse_field, base, stride, n, ng, L);
       // Curvilinear: reconstruct the orthonormal components sqrt(f_bb) B^b, smooth through the
       // axis and the origin, not the coordinate components (B^theta ~ 1/r, B^phi ~ 1/R there).
       if (!cartesian) {

@@ -48,7 +48,7 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
       idx[c2] = ic;
       const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
       const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
-      gather_line(src, nullptr, base, stride, n, ng, L);
+      gather_line<E>(src, nullptr, base, stride, n, ng, L);
       for (int q = 0; q < kNumRecHydro; ++q)
         if (reconstructed_slot<E>(q)) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
       if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
@@ -86,6 +86,51 @@ struct RowDivergence {
   double area_plus[2], area_minus[2], inv_volume[2];
 };
 
+// The metric of cell o, and its centred differences along the directions `used` (the shift's only
+// with `shift`). The vectorised Cartesian rows (every direction used, constant flags) and the
+// per-cell loop share them, so both take the same operations.
+struct CellMetric {
+  double psi, alpha;
+  std::array<double, 3> beta;
+};
+[[gnu::always_inline]] inline CellMetric metric_at(const Field* met, std::ptrdiff_t o) {
+  return {met[Metric::idx::psi].origin[o], met[Metric::idx::alpha].origin[o],
+          {met[Metric::idx::beta].origin[o], met[Metric::idx::beta2].origin[o], met[Metric::idx::beta3].origin[o]}};
+}
+[[gnu::always_inline]] inline MetricDerivatives metric_derivatives_at(const Field* met, std::ptrdiff_t o,
+                                                                      const std::array<std::ptrdiff_t, 3>& st,
+                                                                      const std::array<double, 3>& inv2dx,
+                                                                      const std::array<bool, 3>& used, bool shift) {
+  MetricDerivatives dm;
+#pragma GCC unroll 3
+  for (int d = 0; d < 3; ++d) {
+    if (!used[d]) continue;
+    const std::ptrdiff_t s = st[d];
+    dm.dpsi[d] = (met[Metric::idx::psi].origin[o + s] - met[Metric::idx::psi].origin[o - s]) * inv2dx[d];
+    dm.dalpha[d] = (met[Metric::idx::alpha].origin[o + s] - met[Metric::idx::alpha].origin[o - s]) * inv2dx[d];
+    if (shift)
+      for (int c = 0; c < 3; ++c)
+        dm.dbeta[d][c] = (met[Metric::idx::beta + c].origin[o + s] - met[Metric::idx::beta + c].origin[o - s]) * inv2dx[d];
+  }
+  return dm;
+}
+
+// The fluid state of cell o from the primitives, with v_i and v^2 from the point metric.
+[[gnu::always_inline]] inline FluidState fluid_state_at(const Field* prim, std::ptrdiff_t o, const PointMetric& pm) {
+  FluidState fs;
+  fs.rho = prim[Prim::idx::rho].origin[o];
+  fs.press = prim[Prim::idx::press].origin[o];
+  fs.eps = prim[Prim::idx::eps].origin[o];
+  fs.h = 1.0 + fs.eps + fs.press / fs.rho;
+  fs.W = prim[Prim::idx::W].origin[o];
+  for (int c = 0; c < 3; ++c) {
+    fs.v[c] = prim[Prim::idx::vel + c].origin[o];
+    fs.v_dn[c] = pm.g_dn[c] * fs.v[c];
+  }
+  fs.v2 = fs.v[0] * fs.v_dn[0] + fs.v[1] * fs.v_dn[1] + fs.v[2] * fs.v_dn[2];
+  return fs;
+}
+
 template <bool Mhd, bool Shift>
 [[gnu::flatten]] void cartesian_sources_row(const Field* prim, const Field* met, const Field* bf, const Field* rhs,
                                             const RowDivergence& dv, std::ptrdiff_t o0,
@@ -105,30 +150,11 @@ template <bool Mhd, bool Shift>
       r -= (dv.area_plus[1] * dv.plus[1][c][i] - dv.area_minus[1] * dv.minus[1][c][i]) * dv.inv_volume[1];
       out[c] = r;
     }
-    const double psi = met[Metric::idx::psi].origin[o], alpha = met[Metric::idx::alpha].origin[o];
-    const std::array<double, 3> beta{met[Metric::idx::beta].origin[o], met[Metric::idx::beta2].origin[o], met[Metric::idx::beta3].origin[o]};
-    const PointMetric pm = point_metric_cartesian(psi, alpha, beta);
-    MetricDerivatives dm;
-#pragma GCC unroll 3
-    for (int d = 0; d < 3; ++d) {
-      const std::ptrdiff_t s = st[d];
-      dm.dpsi[d] = (met[Metric::idx::psi].origin[o + s] - met[Metric::idx::psi].origin[o - s]) * inv2dx[d];
-      dm.dalpha[d] = (met[Metric::idx::alpha].origin[o + s] - met[Metric::idx::alpha].origin[o - s]) * inv2dx[d];
-      if constexpr (Shift)
-        for (int c = 0; c < 3; ++c)
-          dm.dbeta[d][c] = (met[Metric::idx::beta + c].origin[o + s] - met[Metric::idx::beta + c].origin[o - s]) * inv2dx[d];
-    }
-    FluidState fs;
-    fs.rho = prim[Prim::idx::rho].origin[o];
-    fs.press = prim[Prim::idx::press].origin[o];
-    fs.eps = prim[Prim::idx::eps].origin[o];
-    fs.h = 1.0 + fs.eps + fs.press / fs.rho;
-    fs.W = prim[Prim::idx::W].origin[o];
-    for (int c = 0; c < 3; ++c) {
-      fs.v[c] = prim[Prim::idx::vel + c].origin[o];
-      fs.v_dn[c] = pm.g_dn[c] * fs.v[c];
-    }
-    fs.v2 = fs.v[0] * fs.v_dn[0] + fs.v[1] * fs.v_dn[1] + fs.v[2] * fs.v_dn[2];
+    const CellMetric cm = metric_at(met, o);
+    const double psi = cm.psi;
+    const PointMetric pm = point_metric_cartesian(psi, cm.alpha, cm.beta);
+    const MetricDerivatives dm = metric_derivatives_at(met, o, st, inv2dx, {true, true, true}, Shift);
+    const FluidState fs = fluid_state_at(prim, o, pm);
     double src[kNumCons];
     if constexpr (Mhd) {
       const MagneticState ms = magnetic_state(fs, pm, bf[0].origin[o], bf[1].origin[o], bf[2].origin[o]);
@@ -155,7 +181,7 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
   for (int c = 0; c < kNumCons; ++c) rhs[c] = b.field(g.cons_rhs, c);
   const CoordinateSystem cs = b.coordinates;
   const bool cartesian = cs == CoordinateSystem::cartesian;
-  bool used[3];
+  std::array<bool, 3> used{};
   std::array<double, 3> inv2dx{0, 0, 0};
   const std::array<std::ptrdiff_t, 3> st{1, met[0].sj, met[0].sk};
   std::array<std::ptrdiff_t, 3> fst{};
@@ -238,8 +264,8 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
         const std::ptrdiff_t o = i + j * met[0].sj + k * met[0].sk;
         double out[kNumCons];
         for (int c = 0; c < kNumCons; ++c) out[c] = row[c][i];
-        const double psi = met[Metric::idx::psi].origin[o], alpha = met[Metric::idx::alpha].origin[o];
-        const std::array<double, 3> beta{met[Metric::idx::beta].origin[o], met[Metric::idx::beta2].origin[o], met[Metric::idx::beta3].origin[o]};
+        const CellMetric cm = metric_at(met, o);
+        const double psi = cm.psi, alpha = cm.alpha;
         if (!cartesian) {
           const Point3 x = cell_point(b, i, j, k);
           fd = coords::metric_diagonal(cs, x, trig.sin_centre(j));
@@ -247,28 +273,10 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
           df = metric_diagonal_derivatives(fd, gam);
         }
         // Cartesian: f = 1, the same bits with one division instead of three.
-        const PointMetric pm = cartesian ? point_metric_cartesian(psi, alpha, beta) : point_metric(psi, alpha, beta, fd);
-        MetricDerivatives dm;
-        for (int d = 0; d < 3; ++d) {
-          if (!used[d]) continue;
-          const std::ptrdiff_t s = st[d];
-          dm.dpsi[d] = (met[Metric::idx::psi].origin[o + s] - met[Metric::idx::psi].origin[o - s]) * inv2dx[d];
-          dm.dalpha[d] = (met[Metric::idx::alpha].origin[o + s] - met[Metric::idx::alpha].origin[o - s]) * inv2dx[d];
-          if (shift)
-            for (int c = 0; c < 3; ++c)
-              dm.dbeta[d][c] = (met[Metric::idx::beta + c].origin[o + s] - met[Metric::idx::beta + c].origin[o - s]) * inv2dx[d];
-        }
-        FluidState fs;
-        fs.rho = prim[Prim::idx::rho].origin[o];
-        fs.press = prim[Prim::idx::press].origin[o];
-        fs.eps = prim[Prim::idx::eps].origin[o];
-        fs.h = 1.0 + fs.eps + fs.press / fs.rho;
-        fs.W = prim[Prim::idx::W].origin[o];
-        for (int c = 0; c < 3; ++c) {
-          fs.v[c] = prim[Prim::idx::vel + c].origin[o];
-          fs.v_dn[c] = pm.g_dn[c] * fs.v[c];
-        }
-        fs.v2 = fs.v[0] * fs.v_dn[0] + fs.v[1] * fs.v_dn[1] + fs.v[2] * fs.v_dn[2];
+        const PointMetric pm =
+            cartesian ? point_metric_cartesian(psi, alpha, cm.beta) : point_metric(psi, alpha, cm.beta, fd);
+        const MetricDerivatives dm = metric_derivatives_at(met, o, st, inv2dx, used, shift);
+        const FluidState fs = fluid_state_at(prim, o, pm);
         double src[kNumCons];
         double ptot = fs.press;
         [[maybe_unused]] MagneticState ms;

@@ -1,6 +1,6 @@
 #pragma once
 // A bare 3D block with the groups of HydroBase, Spacetime and GRMHD as their thorn.yaml declare
-// them, for the bit-for-bit kernel tests (no grid, no exchange).
+// them, for the bit-for-bit kernel tests and the benchmark's star block (no grid, no exchange).
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -51,11 +51,12 @@ inline MhdGroups mhd_groups(const VariableRegistry& vars) {
   return g;
 }
 
-// An n^3 Cartesian block with 3 ghosts and cells of different widths along x, y, z.
-inline std::unique_ptr<Block> kernel_block(const VariableRegistry& vars, int n) {
+// An n^3 Cartesian block from the origin with 3 ghosts and cell widths dx (by default different
+// along x, y, z).
+inline std::unique_ptr<Block> kernel_block(const VariableRegistry& vars, int n,
+                                           const std::array<double, 3>& dx = {0.3, 0.25, 0.2}) {
   return std::make_unique<Block>(0, 0, std::array<std::int64_t, 3>{0, 0, 0}, std::array<int, 3>{n, n, n},
-                                 std::array<int, 3>{3, 3, 3}, std::array<double, 3>{0.0, 0.0, 0.0},
-                                 std::array<double, 3>{0.3, 0.25, 0.2}, vars);
+                                 std::array<int, 3>{3, 3, 3}, std::array<double, 3>{0.0, 0.0, 0.0}, dx, vars);
 }
 
 }  // namespace remnant::grmhd::test

@@ -59,27 +59,35 @@ double upwind_reference(Block& blk, int ct_group, int bface_group, int a, int b,
   return hll_product_reference(e.ap, e.am, e.vl, e.vh, bl, bh);
 }
 
-TEST(CtKernels, CartesianUctHllAndFaceRhsHaveTheBitsOfThePointwiseFormulas) {
-  const VariableRegistry vars = test::kernel_registry();
-  const MhdGroups g = test::mhd_groups(vars);
-  constexpr int n = 6;
-  const std::unique_ptr<Block> block = test::kernel_block(vars, n);
-  Block& blk = *block;
-  std::mt19937_64 rng(42);
+// The face-sweep outputs the EMFs read (every CT component) and the face fields, uniform in [-1, 1]
+// from `seed` on every point of the block; the HLL speeds alpha^+- through `speed` (v -> alpha >= 0).
+template <class Speed>
+void fill_random_ct_inputs(Block& blk, const MhdGroups& g, std::uint64_t seed, Speed speed) {
+  std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  int zero_width = 0;
   for (int d = 0; d < 3; ++d) {
     const std::size_t np = blk.points_per_component(g.ct[d]);
     double* ct = blk.data(g.ct[d]);
     for (int q = 0; q < kNumCt; ++q)
       for (std::size_t i = 0; i < np; ++i) {
         double v = u(rng);
-        if (q == kAlphaPlus || q == kAlphaMinus) v = std::abs(v) < 0.3 ? 0.0 : std::abs(v);
+        if (q == kAlphaPlus || q == kAlphaMinus) v = speed(v);
         ct[static_cast<std::size_t>(q) * np + i] = v;
       }
     double* bf = blk.data(g.bface[d]);
     for (std::size_t i = 0; i < blk.size(g.bface[d]); ++i) bf[i] = u(rng);
   }
+}
+
+TEST(CtKernels, CartesianUctHllAndFaceRhsHaveTheBitsOfThePointwiseFormulas) {
+  const VariableRegistry vars = test::kernel_registry();
+  const MhdGroups g = test::mhd_groups(vars);
+  constexpr int n = 6;
+  const std::unique_ptr<Block> block = test::kernel_block(vars, n);
+  Block& blk = *block;
+  // Speeds below 0.3 set to zero: edges with a zero HLL width.
+  fill_random_ct_inputs(blk, g, 42, [](double v) { return std::abs(v) < 0.3 ? 0.0 : std::abs(v); });
+  int zero_width = 0;
   edge_emfs(EmfScheme::uct_hll, g, blk);
   face_rhs(g, blk);
   for (int c = 0; c < 3; ++c) {
@@ -143,20 +151,7 @@ TEST(CtKernels, CartesianUctHllUsesTheChosenEdgeReconstruction) {
   constexpr int n = 6;
   const std::unique_ptr<Block> block = test::kernel_block(vars, n);
   Block& blk = *block;
-  std::mt19937_64 rng(7);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (int d = 0; d < 3; ++d) {
-    const std::size_t np = blk.points_per_component(g.ct[d]);
-    double* ct = blk.data(g.ct[d]);
-    for (int q = 0; q < kNumCt; ++q)
-      for (std::size_t i = 0; i < np; ++i) {
-        double v = u(rng);
-        if (q == kAlphaPlus || q == kAlphaMinus) v = std::abs(v) + 0.1;
-        ct[static_cast<std::size_t>(q) * np + i] = v;
-      }
-    double* bf = blk.data(g.bface[d]);
-    for (std::size_t i = 0; i < blk.size(g.bface[d]); ++i) bf[i] = u(rng);
-  }
+  fill_random_ct_inputs(blk, g, 7, [](double v) { return std::abs(v) + 0.1; });
   for (Reconstruction r : {Reconstruction::ppm_ep, Reconstruction::ppm, Reconstruction::minmod}) {
     edge_emfs(EmfScheme::uct_hll, g, blk, r);
     double worst = 0, scale = 0;

@@ -6,17 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
 #include <numbers>
 
 #include "XCFC/multigrid/multigrid.hpp"
 #include "XCFC/vector_poisson.hpp"
 #include "manufactured.hpp"
+#include "same_bits.hpp"
 
 namespace {
 
 using namespace remnant;
 using namespace remnant::xcfc;
+using test::same_bits;
 
 GridShape spherical_1d() {
   using B = Boundary;
@@ -28,10 +29,6 @@ std::vector<double> bump(const GridShape& s, double a) {
   std::vector<double> v(s.cells());
   for (int i = 0; i < s.n[0]; ++i) v[static_cast<std::size_t>(i)] = a * std::exp(-s.centre(0, i) * s.centre(0, i) / 16);
   return v;
-}
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
 TEST(XCFCDirect1D, LineSolvesSetUpLevelZeroOnly) {

@@ -5,17 +5,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstring>
-#include <numbers>
 
 #include "XCFC/multigrid/multigrid.hpp"
 #include "XCFC/vector_poisson.hpp"
 #include "spherical_octant.hpp"
+#include "same_bits.hpp"
 
 namespace {
 
 using namespace remnant;
 using namespace remnant::xcfc;
+using test::same_bits;
 
 GridShape spherical_2d() { return test::spherical_octant_2d(64, 16, 20.0); }
 
@@ -28,10 +28,6 @@ std::vector<double> bump(const GridShape& s, double a) {
       v[static_cast<std::size_t>(i + s.n[0] * j)] = a * std::exp(-r * r / 16) * (1 + 0.3 * std::cos(2 * th));
     }
   return v;
-}
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
 TEST(XCFCFactorCache, SequenceOfEquationsMatchesFreshSolves) {

@@ -14,6 +14,7 @@
 #include "XCFC/multigrid/composite_multigrid.hpp"
 #include "manufactured.hpp"
 #include "refined_layouts.hpp"
+#include "same_bits.hpp"
 
 namespace {
 
@@ -49,10 +50,6 @@ Problem make_problem(const GridShape& s, bool nonlinear, bool m1) {
   p.set.max_cycles = 40;
   p.set.full_multigrid = nonlinear;
   return p;
-}
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
 double max_error(const std::vector<double>& u, const std::vector<double>& exact) {

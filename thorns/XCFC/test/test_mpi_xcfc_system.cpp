@@ -8,12 +8,12 @@
 #include <mpi.h>
 
 #include <cmath>
-#include <cstring>
-#include <numbers>
 
 #include "XCFC/xcfc_system.hpp"
 #include "manufactured.hpp"
 #include "refined_layouts.hpp"
+#include "same_bits.hpp"
+#include "spherical_octant.hpp"
 
 namespace {
 
@@ -43,15 +43,6 @@ Sources sources(CompositeMultigrid& mg) {
     });
   }
   return src;
-}
-
-bool same_bits(const CompositeField& a, const CompositeField& b) {
-  if (a.part.size() != b.part.size()) return false;
-  for (std::size_t n = 0; n < a.part.size(); ++n)
-    if (a.part[n].size() != b.part[n].size() ||
-        std::memcmp(a.part[n].data(), b.part[n].data(), a.part[n].size() * sizeof(double)) != 0)
-      return false;
-  return true;
 }
 
 // Solves the whole sequence with `solver`; returns the state.
@@ -124,9 +115,7 @@ void check(const char* name, XcfcSolver& serial, XcfcSolver& parallel) {
 }
 
 TEST(XCFCMultigridMPI, SystemSpherical2D) {
-  using B = Boundary;
-  const GridShape s = make_shape(CoordinateSystem::spherical, 2, {64, 32, 1}, {0, 0, 0}, {8, std::numbers::pi / 2, 2 * std::numbers::pi},
-                                 {{{B::origin, B::outer}, {B::axis, B::reflect}, {B::outer, B::outer}}});
+  const GridShape s = spherical_octant_2d(64, 32, 8.0);
   XcfcSolver serial(s), parallel(s, MPI_COMM_WORLD);
   check("spherical 2D", serial, parallel);
 }

@@ -11,6 +11,7 @@
 #include "XCFC/xcfc_system.hpp"
 #include "manufactured.hpp"
 #include "refined_layouts.hpp"
+#include "same_bits.hpp"
 
 namespace {
 
@@ -30,15 +31,6 @@ CompositeLayout refined(const GridShape& g, double fraction) {
   std::array<int, 3> pc{4, 4, 4};
   if (g.coordinates == CoordinateSystem::spherical && g.dimension == 2) b[1] = {g.lo[1], g.lo[1] + g.n[1] * g.dx[1]};
   return nested_layout(g, pc, {b});
-}
-
-bool same_bits(const CompositeField& a, const CompositeField& b) {
-  if (a.part.size() != b.part.size()) return false;
-  for (std::size_t n = 0; n < a.part.size(); ++n)
-    if (a.part[n].size() != b.part[n].size() ||
-        std::memcmp(a.part[n].data(), b.part[n].data(), a.part[n].size() * sizeof(double)) != 0)
-      return false;
-  return true;
 }
 
 TEST(XCFCSolverGeometry, ChristoffelsAreThoseOfTheCoordinates) {
