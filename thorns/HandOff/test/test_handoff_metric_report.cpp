@@ -25,6 +25,7 @@
 #include "HandOff/handoff_state.hpp"
 #include "TOV/tov_solver.hpp"
 #include "remnant/driver.hpp"
+#include "handoff_profiles.hpp"
 #include "synthetic_carpet.hpp"
 
 std::span<const remnant::ThornEntry> remnant_compiled_thorns();
@@ -104,15 +105,7 @@ Result hand_off(const MetricTov& data, const std::vector<std::string>& more) {
   sim.run();
   Result r;
   r.report = sim.context().service<handoff::HandOffState>("HandOff::state").report;
-  std::ifstream prof(out / "handoff_profiles.tsv");
-  std::string row;
-  while (std::getline(prof, row)) {
-    if (row.empty() || row[0] == '#') continue;
-    std::istringstream fields(row);
-    std::array<double, 11> v{};
-    for (double& x : v) fields >> x;
-    r.profiles.push_back(v);
-  }
+  r.profiles = handoff_test::read_handoff_profiles(out / "handoff_profiles.tsv");
   return r;
 }
 
