@@ -14,6 +14,7 @@
 #include "GRMHD/sources.hpp"
 #include "GRMHD/sources_mhd.hpp"
 #include "GRMHD/valencia.hpp"
+#include "centroid_derivative.hpp"
 #include "face_kernel.hpp"
 #include "line_scratch.hpp"
 #include "remnant/cell_geometry.hpp"
@@ -188,6 +189,7 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
   Point3 fd{1.0, 1.0, 1.0};
   Christoffels gam{};
   const PolarTrig trig(b);
+  const CentroidOffsets centroid(b, used);
   thread_local std::vector<double> row_storage;
   row_storage.resize(static_cast<std::size_t>(kNumCons) * static_cast<std::size_t>(b.n[0]));
   double* row[kNumCons];
@@ -252,11 +254,12 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
         for (int d = 0; d < 3; ++d) {
           if (!used[d]) continue;
           const std::ptrdiff_t s = st[d];
-          dm.dpsi[d] = (met[Metric::idx::psi].origin[o + s] - met[Metric::idx::psi].origin[o - s]) * inv2dx[d];
-          dm.dalpha[d] = (met[Metric::idx::alpha].origin[o + s] - met[Metric::idx::alpha].origin[o - s]) * inv2dx[d];
+          // At the centroid, where the pressure balance of the flux divergence sits (centroid_derivative.hpp).
+          const double w = centroid.weight(d, id[d]);
+          dm.dpsi[d] = centroid_derivative(met[Metric::idx::psi].origin + o, s, inv2dx[d], w);
+          dm.dalpha[d] = centroid_derivative(met[Metric::idx::alpha].origin + o, s, inv2dx[d], w);
           if (shift)
-            for (int c = 0; c < 3; ++c)
-              dm.dbeta[d][c] = (met[Metric::idx::beta + c].origin[o + s] - met[Metric::idx::beta + c].origin[o - s]) * inv2dx[d];
+            for (int c = 0; c < 3; ++c) dm.dbeta[d][c] = centroid_derivative(met[Metric::idx::beta + c].origin + o, s, inv2dx[d], w);
         }
         FluidState fs;
         fs.rho = prim[Prim::idx::rho].origin[o];
