@@ -14,6 +14,7 @@
 #include "GRMHD/sources.hpp"
 #include "GRMHD/sources_mhd.hpp"
 #include "GRMHD/valencia.hpp"
+#include "centroid_derivative.hpp"
 #include "face_kernel.hpp"
 #include "line_scratch.hpp"
 #include "remnant/cell_geometry.hpp"
@@ -113,6 +114,25 @@ struct CellMetric {
         dm.dbeta[d][c] = (met[Metric::idx::beta + c].origin[o + s] - met[Metric::idx::beta + c].origin[o - s]) * inv2dx[d];
   }
   return dm;
+}
+// Adds w (f(i+1) - 2 f(i) + f(i-1)) to the centred differences: the derivative at the centroid
+// (centroid_derivative.hpp); w = 0 along Cartesian-like directions, which keep their bits.
+inline void move_derivatives_to_centroid(MetricDerivatives& dm, const Field* met, std::ptrdiff_t o,
+                                         const std::array<std::ptrdiff_t, 3>& st, const CentroidOffsets& centroid,
+                                         const int* id, const std::array<bool, 3>& used, bool shift) {
+  for (int d = 0; d < 3; ++d) {
+    const double w = centroid.weight(d, id[d]);
+    if (!used[d] || w == 0.0) continue;
+    const std::ptrdiff_t s = st[d];
+    const auto curvature = [&](int var) {
+      const double* f = met[var].origin + o;
+      return w * (f[s] - 2.0 * f[0] + f[-s]);
+    };
+    dm.dpsi[d] += curvature(Metric::idx::psi);
+    dm.dalpha[d] += curvature(Metric::idx::alpha);
+    if (shift)
+      for (int c = 0; c < 3; ++c) dm.dbeta[d][c] += curvature(Metric::idx::beta + c);
+  }
 }
 
 // The fluid state of cell o from the primitives, with v_i and v^2 from the point metric.
@@ -214,6 +234,7 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
   Point3 fd{1.0, 1.0, 1.0};
   Christoffels gam{};
   const PolarTrig trig(b);
+  const CentroidOffsets centroid(b, used);
   thread_local std::vector<double> row_storage;
   row_storage.resize(static_cast<std::size_t>(kNumCons) * static_cast<std::size_t>(b.n[0]));
   double* row[kNumCons];
@@ -275,7 +296,9 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
         // Cartesian: f = 1, the same bits with one division instead of three.
         const PointMetric pm =
             cartesian ? point_metric_cartesian(psi, alpha, cm.beta) : point_metric(psi, alpha, cm.beta, fd);
-        const MetricDerivatives dm = metric_derivatives_at(met, o, st, inv2dx, used, shift);
+        MetricDerivatives dm = metric_derivatives_at(met, o, st, inv2dx, used, shift);
+        // At the centroid, where the pressure balance of the flux divergence sits (centroid_derivative.hpp).
+        if (!cartesian) move_derivatives_to_centroid(dm, met, o, st, centroid, id, used, shift);
         const FluidState fs = fluid_state_at(prim, o, pm);
         double src[kNumCons];
         double ptot = fs.press;

@@ -268,7 +268,10 @@ TEST(RotatingStarGrids, EvolutionIn2DCylindricalAnd3DCartesianAgrees) {
   for (const auto& r : car) dJ3 = std::max(dJ3, std::abs(r.rotation.J / car[0].rotation.J - 1));
   std::printf("30 steps (t = %.2f, %.2f): max |rho_c/rho_c(0)| difference 2D - 3D %.2e; J drift 2D %.2e, 3D %.2e; rho_c/rho_c(0) at the end %.4f, %.4f\n",
               cyl.back().time, car.back().time, drho, dJ2, dJ3, cyl.back().rho_c / cyl[0].rho_c, car.back().rho_c / car[0].rho_c);
-  EXPECT_LT(drho, 1e-2);  // measured 5.4e-3 while rho_c itself falls by 3-4 % (dx = 1)
+  // Measured 1.8e-2: by t = 18.3 the 2D rho_c falls 0.9 % (16^2; 32^2 0.28 %, 64^2 0.08 %), the 3D
+  // one 2.7 %: the difference is the 3D run's error. (5.4e-3 before GRMHD took the metric derivatives
+  // at the centroid, when the 2D run fell 2.7 %, 0.86 %, 0.26 %: the same error as the 3D one.)
+  EXPECT_LT(drho, 2.5e-2);
   EXPECT_LT(dJ2, 1e-4);
   EXPECT_LT(dJ3, 3e-3);
 }
