@@ -71,20 +71,16 @@ void repair_thermal_index(RawTable& raw, const BuildOptions& opts, CheckReport& 
         column(ir, iy);
         if (!std::isfinite(best_max)) continue;  // no single-node fix: the check warns
         double& pk = raw.press.v[(iy * nt + best_k) * nr + ir];
-        const double change = std::abs(best_p / pk - 1);
-        if (change >= worst_change) {
-          worst_change = change;
+        const double old = pk;
+        pk = best_p;
+        column(ir, iy);
+        if (std::abs(best_p / old - 1) >= worst_change) {
+          worst_change = std::abs(best_p / old - 1);
           worst.str("");
           worst << "(irho, iT, iYe) = (" << ir << ", " << best_k << ", " << iy << "): rho = " << raw.rho[ir] * units::density_cgs
-                << " g/cm^3, T = " << raw.T[best_k] << " MeV, Ye = " << raw.ye[iy] << ": p " << pk << " -> " << best_p
-                << " (code, " << 100 * (best_p / pk - 1) << " %), index of T interval " << it << " " << before
-                << " -> ";
-          pk = best_p;
-          column(ir, iy);
-          worst << g[it];
-        } else {
-          pk = best_p;
-          column(ir, iy);
+                << " g/cm^3, T = " << raw.T[best_k] << " MeV, Ye = " << raw.ye[iy] << ": p " << old << " -> " << best_p
+                << " (code, " << 100 * (best_p / old - 1) << " %), index of T interval " << it << " " << before << " -> "
+                << g[it];
         }
         ++repaired;
       }
