@@ -40,6 +40,7 @@ eos::EosConfig config_from(const Context& ctx) {
   c.read.build.max_inconsistent_fraction = ctx.param<double>("EOS", "table_max_inconsistent_fraction");
   c.read.build.thermal_index_max = ctx.param<double>("EOS", "table_thermal_index_max");
   c.read.build.thermal_index_jump = ctx.param<double>("EOS", "table_thermal_index_jump");
+  c.read.build.repair_thermal_index = ctx.param<bool>("EOS", "table_repair_thermal_index");
   return c;
 }
 

@@ -1,7 +1,8 @@
 // Load-time checks and conversion of a RawTable into the internal TableData.
 // Errors (TableError): missing or mis-sized fields, bad axes, NaN/Inf in thermodynamic data,
 // eps + shift <= 0. Counted warnings: cs2 outside [0, 1] (clamped), eps not increasing with T,
-// p <= 0 (stored with a shift), NaN in composition (set to 0), thermal-index jumps along T.
+// p <= 0 (stored with a shift), NaN in composition (set to 0), thermal-index jumps along T (with
+// BuildOptions::repair_thermal_index their nodes' pressure is replaced first, and that is a warning).
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -166,6 +167,8 @@ std::shared_ptr<const TableData> build_table(RawTable raw, const BuildOptions& o
       if (bad) rep.warn(raw.file, f->dataset, bad, "NaN/Inf composition set to 0, first at " + at_str(raw, first));
     }
   }
+
+  repair_thermal_index(raw, opts, rep);  // opt-in, before anything reads the pressure
 
   // Pressure is interpolated in log: shift it when the table has p <= 0.
   const auto [pmin_it, pmax_it] = std::minmax_element(raw.press.v.begin(), raw.press.v.end());

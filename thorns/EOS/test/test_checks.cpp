@@ -270,3 +270,72 @@ TEST(EOSChecks, SharedReducedSFHoReportsItsThermalIndexNode) {
   EXPECT_NE(w->message.find("0.0001377 code"), std::string::npos) << w->message;
   EXPECT_NE(w->message.find("index 158.3 against 4.969"), std::string::npos) << w->message;
 }
+
+// EOS::table_repair_thermal_index: the outlying node's pressure is replaced by log p linear in log T
+// from its column (exact for this table, which is log-linear in log T), the check then passes, and
+// the repair is a warning naming the node. Without the option the same table only warns.
+TEST(EOSChecks, ThermalIndexRepairReplacesTheOutlyingPressure) {
+  // Like cold degenerate matter: p and eps change little with T, so a 30 % error in p at T_min makes
+  // the first interval's index 15x the next one's.
+  Synthetic cold;
+  cold.logp = {-3.0 + std::log(20.0), 1.0, 0.02, 0.0};
+  cold.logeps = {-3.0, 0.05, 0.02, 0.0};
+  auto raw = cold.raw();
+  const std::size_t nr = raw.rho.size(), nt = raw.T.size();
+  auto idx = [&](int ir, int it, int iy) { return (std::size_t(iy) * nt + it) * nr + ir; };
+  const int ir = 7, iy = 3;
+  const double p_true = raw.press.v[idx(ir, 0, iy)];
+  raw.press.v[idx(ir, 0, iy)] = 0.7 * p_true;  // p at T_min below the column's trend
+  const auto plain = build_table(raw);
+  ASSERT_NE(plain->report.find("thermal_index"), nullptr) << plain->report.str();
+  EXPECT_EQ(plain->report.find("thermal_index_repair"), nullptr);
+  BuildOptions repair;
+  repair.repair_thermal_index = true;
+  const auto t = build_table(raw, repair);
+  EXPECT_EQ(t->report.find("thermal_index"), nullptr) << t->report.str();
+  const CheckIssue* w = t->report.find("thermal_index_repair");
+  ASSERT_NE(w, nullptr) << t->report.str();
+  EXPECT_EQ(w->count, 1u);
+  EXPECT_NE(w->message.find("(irho, iT, iYe) = (7, 0, 3)"), std::string::npos) << w->message;
+  EXPECT_NE(w->message.find("(code, 42.86 %)"), std::string::npos) << w->message;
+  EXPECT_NEAR(std::exp(t->at(ir, 0, iy, kLogP)) - t->p_shift, p_true, 1e-12 * p_true);
+  // Every other node is untouched.
+  const auto ref = build_table(cold.raw(), repair);
+  EXPECT_EQ(ref->report.find("thermal_index_repair"), nullptr);
+  for (int k = 0; k < int(raw.size()); ++k)
+    if (std::size_t(k) != idx(ir, 0, iy))
+      ASSERT_EQ(t->thermo[k * kThermoStride + kLogP], ref->thermo[k * kThermoStride + kLogP]) << k;
+}
+
+// An outlier in eps (p follows its column) has no single-node pressure fix: nothing is replaced and
+// the check still warns.
+TEST(EOSChecks, ThermalIndexRepairLeavesAnEpsOutlierToTheWarning) {
+  auto raw = hot_index_table().raw();
+  const std::size_t nr = raw.rho.size(), nt = raw.T.size();
+  auto idx = [&](int ir, int it, int iy) { return (std::size_t(iy) * nt + it) * nr + ir; };
+  double& e0 = raw.eps.v[idx(7, 0, 3)];
+  const double e1 = raw.eps.v[idx(7, 1, 3)];
+  e0 = e1 - 0.01 * (e1 - e0);
+  BuildOptions repair;
+  repair.repair_thermal_index = true;
+  const auto t = build_table(raw, repair);
+  EXPECT_EQ(t->report.find("thermal_index_repair"), nullptr) << t->report.str();
+  EXPECT_NE(t->report.find("thermal_index"), nullptr) << t->report.str();
+}
+
+// The reduced SFHo node (1.377e-4, T_min, Ye 0.0721): p 8.8 % up, index 158 -> 1.1, the check passes.
+TEST(EOSChecks, SharedReducedSFHoThermalIndexRepair) {
+  const std::string path = eos_test::shared_eos("SFHo_reduced_39r_39t_20y.h5");
+  REQUIRE_TABLE(path);
+  ReadOptions o;
+  o.sc_cs2 = Cs2Convention::relativistic;
+  o.build.repair_thermal_index = true;
+  auto t = load_table(path, o);
+  EXPECT_EQ(t->report.find("thermal_index"), nullptr) << t->report.str();
+  const CheckIssue* w = t->report.find("thermal_index_repair");
+  ASSERT_NE(w, nullptr) << t->report.str();
+  EXPECT_EQ(w->count, 1u) << w->message;
+  EXPECT_NE(w->message.find("(irho, iT, iYe) = (34, 0, 2)"), std::string::npos) << w->message;
+  EXPECT_NE(w->message.find("(code, 8.814 %)"), std::string::npos) << w->message;
+  EXPECT_NE(w->message.find("158.3 -> 1.116"), std::string::npos) << w->message;
+}

@@ -58,6 +58,13 @@ TEST(EOSThorn, StartupPublishesTheEos) {
   params.set("EOS", "table_thermal_index_jump", 200.0, {});
   r.fns.at("EOS_Startup")(ctx);
   EXPECT_EQ(ctx.service<remnant::eos::EOS>("eos").tabulated()->table().report.find("thermal_index"), nullptr);
+  // EOS::table_repair_thermal_index = true replaces that node's pressure instead (a logged warning).
+  params.set("EOS", "table_thermal_index_jump", 10.0, {});
+  params.set("EOS", "table_repair_thermal_index", true, {});
+  r.fns.at("EOS_Startup")(ctx);
+  EXPECT_EQ(ctx.service<remnant::eos::EOS>("eos").tabulated()->table().report.find("thermal_index"), nullptr);
+  EXPECT_NE(ctx.service<remnant::eos::EOS>("eos").tabulated()->table().report.find("thermal_index_repair"), nullptr);
+  params.set("EOS", "table_repair_thermal_index", false, {});
 
   params.set("EOS", "table_file", std::string("/nonexistent/table.h5"), {});
   try {

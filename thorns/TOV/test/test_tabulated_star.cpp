@@ -21,7 +21,9 @@
 //   now:    t <= 6: 6.33e-4, 1.86e-4, 5.39e-5 (1.46e-5): orders 1.76, 1.79, 1.88;
 //           t <= 25: 6.51e-4, 1.91e-4, 5.54e-5 (3.1e-5): orders 1.77, 1.78 (0.8 at 1600: a pulse at
 //           t ~ 9); t <= 150 at 200, 400: 1.45e-3, 5.5e-4.
-// Not converging yet (not asserted), t <= 60 at 200, 400, 800, 1600 cells: Cowling 1.45e-3, 5.5e-4,
+// Over 1 ms with EOS::table_repair_thermal_index and a mass-weighted norm the drift converges:
+// test_tabulated_drift.cpp. The history of why rho_c does not, with the table as is:
+// Not converging (not asserted), t <= 60 at 200, 400, 800, 1600 cells: Cowling 1.45e-3, 5.5e-4,
 // 8.1e-4, 4.6e-3; xCFC 1.43e-3, 6.5e-4, 8.6e-4, 5.4e-3: from t ~ 27 a step from the crust (r ~ 5 .. 6)
 // focused at the centre. Cause (Cowling, t <= 60 at 400 / 800 / 1600 cells, tabstar2 experiments):
 //  - one node of the table: (rho, T, Ye) = (1.377e-4, T_min = 0.1 MeV, 0.0721), at the crust-core
@@ -32,7 +34,7 @@
 //    adds ~0.36 to cs2 where the table's cs2 is 7e-3; the slightest heating by truncation error there
 //    becomes a pressure step. Replacing p at that node (and at two milder ones: (1.377e-4, 0.0411),
 //    index 5.1 vs 0.8; (2.843e-4, 0.3826), 1.3 vs 0.22) by the continuation from T_1, T_2 at load time
-//    (an experiment, not committed: the table is data): 4.88e-4, 1.64e-4, 5.1e-4 (800 converges,
+//    (an experiment then; EOS::table_repair_thermal_index now replaces the flagged one, opt-in): 4.88e-4, 1.64e-4, 5.1e-4 (800 converges,
 //    order 1.6; xCFC 5.65e-4, 1.70e-4, 6.1e-4, was 8.6e-4 at 800); dropping the T_min row: 4.41e-4,
 //    1.66e-4, 4.13e-4. Consistent with the 0.5 MeV star converging. The table's data, not code:
 //    nothing to fix in the evolution; with this node repaired (or the star at T >= T_1) the drift

@@ -100,6 +100,9 @@ struct BuildOptions {
   // thermal_index_max and thermal_index_jump times its neighbouring intervals' is counted.
   double thermal_index_max = 10;
   double thermal_index_jump = 10;
+  // Replace the pressure of the outlying node of each such interval by log-linear interpolation in
+  // log T from its column (repair_thermal_index.cpp; opt-in: it changes the table's data).
+  bool repair_thermal_index = false;
 };
 
 // Checks a raw table (throws TableError for errors, records warnings) and builds the internal
