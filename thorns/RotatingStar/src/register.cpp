@@ -9,6 +9,7 @@
 
 #include "EOS/eos.hpp"
 #include "RotatingStar/eos_slice.hpp"
+#include "RotatingStar/first_law_check.hpp"
 #include "check_field.hpp"
 #include "RotatingStar/report.hpp"
 #include "RotatingStar/rns_solver.hpp"
@@ -69,6 +70,32 @@ RnsParameters read_parameters(const Context& ctx) {
   return p;
 }
 
+// A table slice's departure from the first law in the star's core (first_law_check.hpp): logged,
+// and a warning where the star's compressions would heat it.
+void report_first_law(const Context& ctx, const tov::ColdSlice& slice, double rho_c) {
+  const auto* table = ctx.service<eos::EOS>("eos").tabulated();
+  const std::string kind = ctx.param<std::string>("RotatingStar", "eos_slice");
+  if (!table || (kind != "tabulated_beta" && kind != "tabulated_fixed_ye")) return;
+  const double T_param = ctx.param<double>("RotatingStar", "slice_T");
+  const double T = T_param < 0 ? table->bounds().T_min : T_param;
+  const FirstLawDeparture d = first_law_departure(*table, slice, T, 0.1 * rho_c, rho_c);
+  char msg[512];
+  std::snprintf(msg, sizeof msg,
+                "RotatingStar: first law of the table %s in the star's core (rho_c/10 .. rho_c, T = %g MeV): "
+                "|(deps/drho)_{T,Ye} rho^2/p - 1| mean %.3f, max %.3f at rho = %.4g",
+                table->table().file.c_str(), T, d.mean, d.worst, d.rho_worst);
+  ctx.info(msg);
+  if (d.mean > kFirstLawWarnMean && ctx.rank() == 0) {
+    char more[256];
+    std::snprintf(more, sizeof more,
+                  " (above %.2f): the interpolated table is not thermodynamically consistent there, so the star's "
+                  "compressions and expansions move eps off the slice and heat the cold star, whose rho_c then drifts by "
+                  "percents over milliseconds; use a finer table",
+                  kFirstLawWarnMean);
+    ctx.warn(std::string(msg) + more);
+  }
+}
+
 struct Cached {
   std::unique_ptr<tov::ColdSlice> slice;
   std::unique_ptr<RotatingStarModel> model;
@@ -80,8 +107,15 @@ std::string exact(double v) {
   return buf;
 }
 
-const RotatingStarModel& model_for(const Context& ctx) {
-  static std::map<std::string, Cached> cache;  // key: the resolved parameters of this thorn
+// The models of this simulation, keyed by the resolved parameters of this thorn. They live with the
+// simulation's context, not in a static: a table slice refers to the simulation's EOS, and a later
+// simulation in the same process (tests) with other EOS parameters would otherwise get a model of
+// the earlier EOS, whose table no longer exists.
+using ModelCache = std::map<std::string, Cached>;
+
+const RotatingStarModel& model_for(Context& ctx) {
+  if (!ctx.has_service("RotatingStar::models")) ctx.publish("RotatingStar::models", std::make_shared<ModelCache>());
+  ModelCache& cache = ctx.service<ModelCache>("RotatingStar::models");
   std::string key = ctx.param<std::string>("RotatingStar", "eos_slice") + ctx.param<std::string>("RotatingStar", "rotation_law");
   for (const char* n : {"poly_K", "poly_gamma", "ye", "slice_T", "rho_central", "omega", "axis_ratio", "A2", "r_out_factor", "tolerance", "K_m", "m"})
     key += " " + exact(ctx.param<double>("RotatingStar", n));
@@ -105,6 +139,7 @@ const RotatingStarModel& model_for(const Context& ctx) {
     line += buf;
   }
   ctx.info(line);
+  report_first_law(ctx, *c.slice, c.model->globals().rho_max);
   if (ctx.rank() == 0) {
     std::ofstream out(ctx.out_dir() + "/rotating_star.tsv");
     for (std::size_t k = 0; k < rows.size(); ++k) out << rows[k].first << (k + 1 < rows.size() ? '\t' : '\n');

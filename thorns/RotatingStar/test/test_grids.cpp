@@ -223,14 +223,14 @@ TEST(PaperRotatingTests, DifferentiallyRotatingStarStarts) {
 }
 
 TEST(PaperRotatingTests, SfhoStarStarts) {
-  const std::string table = std::string(REMNANT_SOURCE_DIR) + "/../shared/eos/Hempel_SFHoEOS_rho222_temp180_ye60_version_1.1_20120817_simple.h5";
+  const std::string table = std::string(REMNANT_SOURCE_DIR) + "/../shared/eos/SFHo_reduced_39r_39t_20y.h5";
   if (!std::filesystem::exists(table)) GTEST_SKIP() << "EOS table missing: " << table;
   const auto row = start("sfho_rns_cyl_2d.yaml", {"EOS::table_file=" + table});
-  // The model (rotating_star.tsv of the run): J = 0.744640, T/|W| = 0.077870, r_p/r_e = 0.663.
-  std::printf("sfho_rns_cyl_2d at t = 0: J %.6f (model 0.744640), T/|W| %.6f (0.077870), Omega_c %.6f (0.02633)\n", 2 * row.rotation.J,
+  // The model (rotating_star.tsv of the run): J = 0.906253, T/|W| = 0.071021, r_p/r_e = 0.662.
+  std::printf("sfho_rns_cyl_2d at t = 0: J %.6f (model 0.906253), T/|W| %.6f (0.071021), Omega_c %.6f (0.02633)\n", 2 * row.rotation.J,
               row.rotation.T_over_W, row.rotation.omega_c);
-  EXPECT_NEAR(2 * row.rotation.J / 0.744640, 1, 1e-3);
-  EXPECT_NEAR(row.rotation.T_over_W / 0.077870, 1, 1e-2);
+  EXPECT_NEAR(2 * row.rotation.J / 0.906253, 1, 1e-3);
+  EXPECT_NEAR(row.rotation.T_over_W / 0.071021, 1, 1e-2);
   EXPECT_NEAR(row.rotation.omega_c / 0.02633, 1, 1e-2);
 }
 
