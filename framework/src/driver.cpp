@@ -1,4 +1,5 @@
 #include "remnant/driver.hpp"
+#include "remnant/comm_counters.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -14,6 +15,7 @@
 #include <sstream>
 #include <thread>
 
+#include "comm_report.hpp"
 #include "failure_report.hpp"
 #include "remnant/build_info.hpp"
 #include "remnant/heap_reuse.hpp"
@@ -304,6 +306,7 @@ double Simulation::inverse_dt_limit() {
     if (std::find(active_.begin(), active_.end(), thorn) != active_.end()) local = std::max(local, fn(*ctx_));
   double global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  comm::count("dt_allreduce", comm::Pattern::allreduce, -1, 1, sizeof(double));
   return global;
 }
 
@@ -374,6 +377,7 @@ void Simulation::run() {
   if (!s.bin_empty("evol")) evolve();
   s.run_bin("terminate", ctx);
   ctx.set_current("Flesh", "driver");
+  if (params_.get<bool>("Flesh", "comm_stats")) write_comm_report(s, ctx);
   if (ctx.rank() == 0 && !opts_.quiet && params_.get<bool>("Flesh", "timers")) std::cout << s.timer_table() << std::flush;
 }
 
