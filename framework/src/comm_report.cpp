@@ -26,7 +26,8 @@ std::string rows_of_rank(const Scheduler& s, Context& ctx) {
   for (const ScheduleNode* n : s.all_functions())
     if (n->calls > 0)
       os << r << "\ttimer:" << n->item->thorn << "::" << n->item->name << "\t-1\ttimer\t" << n->calls << "\t0\t0\t0\t"
-         << n->seconds << '\n';
+         << n->seconds << '\n' << r << "\twork:" << n->item->thorn << "::" << n->item->name << "\t-1\ttimer\t" << n->calls
+         << "\t0\t0\t0\t" << n->work_seconds << '\n';
   os << r << "\ttimer:ghost_sync\t-1\ttimer\t" << s.sync_calls() << "\t0\t0\t0\t" << s.sync_seconds() << '\n';
   if (ctx.has_grid()) {
     // Blocks and interior cells per level owned by this rank: the model's decomposition.
@@ -36,10 +37,16 @@ std::string rows_of_rank(const Scheduler& s, Context& ctx) {
       ++blocks;
       cells += static_cast<long long>(b->n[0]) * b->n[1] * b->n[2];
     }
+    const auto cells0 = ctx.grid().domain().cells;  // level 0 of the domain: the multigrid's base
+    os << r << "\tgrid:domain\t0\tgrid\t1\t0\t0\t" << cells0[0] * cells0[1] * cells0[2] << "\t0\n";
     for (const auto& [level, bc] : per_level)
       os << r << "\tgrid:blocks\t" << level << "\tgrid\t" << bc.first << "\t0\t0\t" << bc.second << "\t0\n";
   }
   os << r << "\tgrid:iterations\t-1\tgrid\t" << ctx.iteration() << "\t0\t0\t0\t0\n";
+  // Since the tallies were cleared (the evolution): this process's CPU time and the wall time.
+  os << r << "\tclock:cpu\t-1\ttimer\t1\t0\t0\t0\t" << comm::cpu_seconds() << '\n';
+  os << r << "\tclock:wall\t-1\ttimer\t1\t0\t0\t0\t" << comm::wall_seconds() << '\n';
+  os << r << "\tclock:mpi_cpu\t-1\ttimer\t1\t0\t0\t0\t" << comm::mpi_cpu_seconds() << '\n';
   return os.str();
 }
 

@@ -1,5 +1,4 @@
 #include "remnant/driver.hpp"
-#include "remnant/comm_counters.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -18,6 +17,7 @@
 #include "comm_report.hpp"
 #include "failure_report.hpp"
 #include "remnant/build_info.hpp"
+#include "remnant/comm_counters.hpp"
 #include "remnant/heap_reuse.hpp"
 #include "remnant/parfile.hpp"
 #include "remnant/registrar.hpp"
@@ -396,6 +396,7 @@ void Simulation::evolve() {
   const double fraction_start = progress_fraction();
   double t_last = wall_start;
   std::int64_t it_last = it_start;
+  comm::reset();  // comm.tsv counts the evolution, not the initial data
   for (;;) {
     ctx.set_current("Flesh", "termination");
     const std::string reason = termination_reason();

@@ -28,6 +28,7 @@ struct ScheduleNode {
   // Timer
   double seconds = 0;
   long calls = 0;
+  double work_seconds = 0;  // CPU time outside MPI (comm.tsv; see remnant/comm_counters.hpp)
 };
 
 struct ImplementationTable {

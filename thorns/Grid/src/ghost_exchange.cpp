@@ -109,7 +109,7 @@ void GhostExchange::run(const VariableRegistry& vars, std::span<const int> group
       offset += p.points * ncomp;
     }
     comm::count("ghost_exchange", comm::Pattern::p2p, phase, static_cast<long long>(ph.sends.size()),
-                static_cast<long long>(sizeof(double) * send_total));
+                static_cast<long long>(sizeof(double) * send_total), static_cast<long long>(send_total / ncomp));
 
     // Local transfers overlap with the messages in flight.
     for (const Transfer* t : ph.local) {

@@ -52,6 +52,7 @@ TEST(GridCommCounters, GhostExchangeBytesOfATwoByTwoLayout) {
   EXPECT_EQ(g.calls, 2);
   EXPECT_EQ(g.messages, 2);  // one per peer and exchange
   EXPECT_EQ(g.bytes, kPoints * (4 + 1) * 8);
+  EXPECT_EQ(g.cells, 2 * kPoints);  // points per component
   EXPECT_EQ(g.pattern, comm::Pattern::p2p);
 
   // A reduction: every rank receives the other's two per-block partials (two doubles each).
