@@ -3,8 +3,11 @@
 #include <mpi.h>
 
 #include <fstream>
+#include <map>
 #include <numeric>
 #include <sstream>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "remnant/comm_counters.hpp"
