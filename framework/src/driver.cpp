@@ -14,8 +14,10 @@
 #include <sstream>
 #include <thread>
 
+#include "comm_report.hpp"
 #include "failure_report.hpp"
 #include "remnant/build_info.hpp"
+#include "remnant/comm_counters.hpp"
 #include "remnant/heap_reuse.hpp"
 #include "remnant/parfile.hpp"
 #include "remnant/registrar.hpp"
@@ -304,6 +306,7 @@ double Simulation::inverse_dt_limit() {
     if (std::find(active_.begin(), active_.end(), thorn) != active_.end()) local = std::max(local, fn(*ctx_));
   double global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  comm::count("dt_allreduce", comm::Pattern::allreduce, -1, 1, sizeof(double));
   return global;
 }
 
@@ -374,6 +377,7 @@ void Simulation::run() {
   if (!s.bin_empty("evol")) evolve();
   s.run_bin("terminate", ctx);
   ctx.set_current("Flesh", "driver");
+  if (params_.get<bool>("Flesh", "comm_stats")) write_comm_report(s, ctx);
   if (ctx.rank() == 0 && !opts_.quiet && params_.get<bool>("Flesh", "timers")) std::cout << s.timer_table() << std::flush;
 }
 
@@ -392,6 +396,7 @@ void Simulation::evolve() {
   const double fraction_start = progress_fraction();
   double t_last = wall_start;
   std::int64_t it_last = it_start;
+  comm::reset();  // comm.tsv counts the evolution, not the initial data
   for (;;) {
     ctx.set_current("Flesh", "termination");
     const std::string reason = termination_reason();

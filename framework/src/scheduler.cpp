@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "remnant/comm_counters.hpp"
 #include "yaml_util.hpp"
 
 namespace remnant {
@@ -345,6 +346,7 @@ void Scheduler::run_bin(const std::string& bin, Context& ctx) {
 void Scheduler::run_node(ScheduleNode& node, Context& ctx) {
   if (!condition_holds(node, ctx)) return;
   const auto t0 = Clock::now();
+  const double w0 = comm::work_seconds();
   if (node.item->is_group) {
     if (node.repeat) {
       ctx.set_current(node.item->thorn, node.item->repeat_while);
@@ -357,6 +359,7 @@ void Scheduler::run_node(ScheduleNode& node, Context& ctx) {
     call_function(node, ctx);
   }
   node.seconds += std::chrono::duration<double>(Clock::now() - t0).count();
+  node.work_seconds += comm::work_seconds() - w0;
   ++node.calls;
 }
 

@@ -28,6 +28,7 @@ struct ScheduleNode {
   // Timer
   double seconds = 0;
   long calls = 0;
+  double work_seconds = 0;  // CPU time outside MPI (comm.tsv; see remnant/comm_counters.hpp)
 };
 
 struct ImplementationTable {
@@ -48,6 +49,8 @@ class Scheduler {
 
   std::string print() const;         // --print-schedule
   std::string timer_table() const;   // seconds per scheduled function
+  double sync_seconds() const { return sync_seconds_; }  // automatic ghost synchronisation
+  long sync_calls() const { return sync_calls_; }
   void set_debug(bool on) { debug_ = on; }
   // While on (initial data), a NaN in the interior of a declared output is fatal, debug or not.
   void set_nan_check(bool on) { nan_check_ = on; }

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "remnant/comm_counters.hpp"
 #include "remnant/error.hpp"
 
 namespace remnant::grid {
@@ -224,6 +225,8 @@ void EdgeCorrection::run_pass(Pass& pass, const VariableRegistry& vars, std::spa
     requests.emplace_back();
     MPI_Isend(start, static_cast<int>(out - start), MPI_DOUBLE, r, pass.fine ? 3 : 2, comm_, &requests.back());
   }
+  comm::count("edge_correction", comm::Pattern::p2p, -1, static_cast<long long>(pass.sends.size()),
+              static_cast<long long>(sizeof(double) * static_cast<std::size_t>(out - send_buffer_.data())));
   // Same-level sources never change in this pass (they hold the lowest gid of their points).
   for (const Transfer* t : pass.local) {
     scratch_.resize(t->points.size() * ncomp);

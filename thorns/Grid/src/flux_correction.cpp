@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "remnant/comm_counters.hpp"
 #include "remnant/error.hpp"
 
 namespace remnant::grid {
@@ -199,6 +200,8 @@ void FluxCorrection::run(const VariableRegistry& vars, std::span<const int> face
     requests.emplace_back();
     MPI_Isend(start, static_cast<int>(out - start), MPI_DOUBLE, r, 0, comm_, &requests.back());
   }
+  comm::count("flux_correction", comm::Pattern::p2p, -1, static_cast<long long>(sends_.size()),
+              static_cast<long long>(sizeof(double) * send_total));
   for (const Item* it : local_) {
     scratch_.resize(item_values(*it));
     pack(*it, scratch_.data());

@@ -1,6 +1,7 @@
 #include "ghost_exchange.hpp"
 
 #include "ghost_plan.hpp"
+#include "remnant/comm_counters.hpp"
 
 namespace remnant::grid {
 
@@ -107,6 +108,8 @@ void GhostExchange::run(const VariableRegistry& vars, std::span<const int> group
       MPI_Isend(start, static_cast<int>(out - start), MPI_DOUBLE, r, phase, comm_, &requests[req++]);
       offset += p.points * ncomp;
     }
+    comm::count("ghost_exchange", comm::Pattern::p2p, phase, static_cast<long long>(ph.sends.size()),
+                static_cast<long long>(sizeof(double) * send_total), static_cast<long long>(send_total / ncomp));
 
     // Local transfers overlap with the messages in flight.
     for (const Transfer* t : ph.local) {

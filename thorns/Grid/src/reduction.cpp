@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "remnant/comm_counters.hpp"
+
 namespace remnant::grid {
 
 namespace {
@@ -118,6 +120,8 @@ double reduce_blocks(std::span<Block* const> blocks, const Forest& layout, int g
   std::vector<BlockPartial> all(static_cast<std::size_t>(layout.total_blocks()));
   MPI_Allgatherv(mine.data(), static_cast<int>(2 * mine.size()), MPI_DOUBLE, all.data(),
                  counts.data(), displs.data(), MPI_DOUBLE, comm);
+  comm::count("grid_reduction", comm::Pattern::allgather, -1, 1,
+              static_cast<long long>(sizeof(BlockPartial) * (all.size() - mine.size())));
   return combine(all, kind);
 }
 

@@ -8,6 +8,7 @@
 
 #include "face_prolongation.hpp"
 #include "ghost_plan.hpp"
+#include "remnant/comm_counters.hpp"
 #include "remnant/error.hpp"
 #include "transfer.hpp"
 
@@ -137,6 +138,7 @@ std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std
     }
     requests.emplace_back();
     MPI_Isend(buf.data(), static_cast<int>(buf.size()), MPI_DOUBLE, r, 1, comm, &requests.back());
+    comm::count("regrid_migration", comm::Pattern::p2p, -1, 1, static_cast<long long>(sizeof(double) * buf.size()));
   }
   MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
 

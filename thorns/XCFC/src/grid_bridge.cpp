@@ -8,6 +8,8 @@
 #include <set>
 #include <stdexcept>
 
+#include "remnant/comm_counters.hpp"
+
 namespace remnant::xcfc {
 
 void check_face(const Domain& domain, int d, int side) {
@@ -103,10 +105,12 @@ void GridBridge::complete(CompositeField& f) const {
     const MPI_Comm comm = ctx_.grid().comm();
     std::vector<double>& base = f.part.at(0);
     MPI_Allreduce(MPI_IN_PLACE, base.data(), static_cast<int>(base.size()), MPI_DOUBLE, MPI_SUM, comm);
+    comm::count("xcfc_bridge_allreduce", comm::Pattern::allreduce, 0, 1, static_cast<long long>(sizeof(double) * base.size()));
     if (f.part.size() > 1) {
       std::vector<double> flat;
       for (std::size_t n = 1; n < f.part.size(); ++n) flat.insert(flat.end(), f.part[n].begin(), f.part[n].end());
       MPI_Allreduce(MPI_IN_PLACE, flat.data(), static_cast<int>(flat.size()), MPI_DOUBLE, MPI_SUM, comm);
+      comm::count("xcfc_bridge_allreduce", comm::Pattern::allreduce, 1, 1, static_cast<long long>(sizeof(double) * flat.size()));
       std::size_t at = 0;
       for (std::size_t n = 1; n < f.part.size(); ++n) {
         auto& p = f.part[n];

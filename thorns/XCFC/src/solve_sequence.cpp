@@ -11,6 +11,7 @@
 #include "adaptive_cadence.hpp"
 #include "cadence.hpp"
 #include "grid_bridge.hpp"
+#include "remnant/comm_counters.hpp"
 #include "remnant/vars/Spacetime.hpp"
 #include "remnant/vars/XCFC.hpp"
 #include "runtime.hpp"
@@ -105,6 +106,7 @@ void shift_and_finish(Context& ctx, SolveInProgress& s) {
   record_history(ctx, s.update);
   warn_unconverged(ctx, s.stats);
   if (s.update) {
+    comm::count_work("xcfc_update", -1, 1);
     ++rt.updates;
     rt.update_cycles += s.stats.psi.cycles + s.stats.alpha_psi.cycles + s.stats.beta.cycles();
     rt.update_prediction = std::max(rt.update_prediction, error.largest());
@@ -112,6 +114,7 @@ void shift_and_finish(Context& ctx, SolveInProgress& s) {
     return;
   }
   rt.prediction = error;
+  comm::count_work("xcfc_solve", -1, 1);
   write_tsv(ctx, rt.reason, s.stats, steps, std::chrono::duration<double>(std::chrono::steady_clock::now() - s.t0).count());
   adapt_interval(ctx, steps, error);
   rt.updates = rt.update_cycles = 0, rt.update_prediction = 0;  // logged with this solve

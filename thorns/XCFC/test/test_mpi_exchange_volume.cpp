@@ -5,7 +5,8 @@
 // the origin's local relaxation gathers only its shells on rank 0.
 // Measured as bytes received per V-cycle in units of the finest level's interior; the solution
 // keeps the bits of one rank (XCFCMultigridMPI.Spherical2D). Run on 2 ranks by XCFC.mpi2; on one
-// rank it checks that nothing is exchanged.
+// rank it checks that nothing is exchanged. The communication tallies (remnant/comm_counters.hpp)
+// of a 3D Cartesian solve are checked against the halo planes counted by hand.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -14,6 +15,7 @@
 #include <numbers>
 
 #include "XCFC/multigrid/multigrid.hpp"
+#include "remnant/comm_counters.hpp"
 #include "spherical_octant.hpp"
 
 namespace {
@@ -47,6 +49,61 @@ TEST(XCFCMultigridMPI, ExchangeVolume2D) {
   if (rank == 0) std::printf("2D spherical 256 x 32 on %d ranks: %d V-cycles, received per V-cycle %.2f levels\n", nranks, st.cycles, per_cycle);
   if (nranks == 1) EXPECT_EQ(mg.received_bytes(), 0);  // one rank: nothing exchanged
   else EXPECT_LT(per_cycle, 4.5);  // 8.48 with whole-level Allgathers, 4.72 with transposes, 3.55 now
+}
+
+// 32^3 Cartesian on 2 ranks: levels 32^3 and 16^3 are split in k slabs (8^3 = 512 cells is below
+// WorkPartition::kMinCells), so each halo exchange sends one ghosted plane, (n + 2)^2 values, to
+// the one neighbour; the halo and gather bytes add up to the bytes the partition received.
+TEST(XCFCMultigridMPI, CommTalliesOfA3DCartesianSolve) {
+  int nranks = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+  GridShape s;
+  s.coordinates = CoordinateSystem::cartesian;
+  s.dimension = 3;
+  s.n = {32, 32, 32};
+  s.dx = {0.5, 0.5, 0.5};
+  for (auto& b : s.boundary) b = {Boundary::reflect, Boundary::outer};
+  ScalarEquation eq;
+  eq.far_value = 1.0;
+  eq.k.assign(s.cells(), 0.0);
+  for (int k = 0; k < s.n[2]; ++k)
+    for (int j = 0; j < s.n[1]; ++j)
+      for (int i = 0; i < s.n[0]; ++i) {
+        const double r2 = s.centre(0, i) * s.centre(0, i) + s.centre(1, j) * s.centre(1, j) + s.centre(2, k) * s.centre(2, k);
+        eq.k[static_cast<std::size_t>(i + s.n[0] * (j + s.n[1] * k))] = r2 < 16 ? 0.05 * (1 - r2 / 16) : 0.0;
+      }
+  SolveSettings set;
+  set.tolerance = 1e-8;
+  Multigrid mg(s, MPI_COMM_WORLD);
+  std::vector<double> u(s.cells(), 1.0);
+  comm::reset();
+  const long long before = mg.received_bytes();
+  ASSERT_TRUE(mg.solve(eq, u, set).converged);
+  const auto& t = comm::tallies();
+  auto tally = [&](const char* kind, int level) {
+    const auto it = t.find(comm::Key{kind, level});
+    return it == t.end() ? comm::Tally{} : it->second;
+  };
+  if (nranks == 1) {
+    EXPECT_EQ(tally("mg_base_halo", 0).calls, 0);
+    return;
+  }
+  ASSERT_EQ(nranks, 2);
+  ASSERT_EQ(mg.distributed_levels(), 2);
+  long long moved = 0;
+  for (int l = 0; l < 3; ++l) {
+    const comm::Tally h = tally("mg_base_halo", l);
+    const long long n = 32 >> l;
+    if (l < 2) {
+      EXPECT_GT(h.calls, 0) << "level " << l;
+      EXPECT_EQ(h.messages, h.calls) << "level " << l;
+      EXPECT_EQ(h.bytes, h.calls * 8 * (n + 2) * (n + 2)) << "level " << l;
+    } else {
+      EXPECT_EQ(h.calls, 0) << "level " << l << " is not split";
+    }
+    moved += h.bytes + tally("mg_base_allgather", l).bytes;
+  }
+  EXPECT_EQ(moved, mg.received_bytes() - before);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "remnant/comm_counters.hpp"
+
 namespace remnant::xcfc {
 
 CellShare::CellShare(const std::vector<std::size_t>& part_sizes, MPI_Comm comm) : comm_(comm) {
@@ -55,6 +57,8 @@ void CellShare::complete(const std::vector<std::vector<std::vector<double>>*>& f
   // One collective per field. A single part is gathered in place (no buffer, no copies); several
   // parts go through one field-sized buffer (no buffer of all the fields: memory per cell counts).
   for (auto* f : fields) {
+    comm::count("xcfc_cellshare_allgather", comm::Pattern::allgather, -1, 1,
+                static_cast<long long>(sizeof(double) * (offsets_.back() - (end_ - begin_))));
     if (f->size() == 1) {
       MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DOUBLE, (*f)[0].data(), counts.data(), displs.data(), MPI_DOUBLE, comm_);
       continue;

@@ -11,6 +11,7 @@
 #include "line_relaxation.hpp"
 #include "line_relaxation_3d.hpp"
 #include "point_relaxation.hpp"
+#include "remnant/comm_counters.hpp"
 #include "shell_relaxation.hpp"
 
 namespace remnant::xcfc {
@@ -185,7 +186,10 @@ CompositeMultigrid::Impl::LeafResidual CompositeMultigrid::Impl::leaf_residual(c
       account(P, T.covered[p], full_range(P));
     }
   }
-  if (nranks > 1) MPI_Allreduce(MPI_IN_PLACE, m, 3, MPI_DOUBLE, MPI_MAX, comm);
+  if (nranks > 1) {
+    MPI_Allreduce(MPI_IN_PLACE, m, 3, MPI_DOUBLE, MPI_MAX, comm);
+    comm::count("mg_residual_allreduce", comm::Pattern::allreduce, -1, 1, 3 * sizeof(double));
+  }
   return {m[0], m[1], m[2]};
 }
 

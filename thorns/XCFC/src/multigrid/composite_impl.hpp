@@ -18,6 +18,7 @@
 #include "composite_tier.hpp"
 #include "composite_transfers.hpp"
 #include "level.hpp"
+#include "remnant/comm_counters.hpp"
 
 namespace remnant::xcfc {
 
@@ -36,6 +37,7 @@ struct CompositeMultigrid::Impl {
   int rank = 0, nranks = 1;
   long long relaxed_finest = 0, relaxed_all = 0;  // cells relaxed by this rank in the current solve
   void count(int t, long long n) {
+    comm::count_work("mg_tier_relax", t, n);
     relaxed_all += n;
     if (t + 1 == static_cast<int>(tiers.size())) relaxed_finest += n;
   }
@@ -54,7 +56,12 @@ struct CompositeMultigrid::Impl {
 
   Tier::Split split(const Tier& T, std::vector<std::vector<int>> units) const { return make_split(T, std::move(units), nranks); }
   std::pair<std::size_t, std::size_t> mine(const Tier::Split& S) const { return owned_units(S, rank); }
-  void exchange(Tier& T, const Tier::Split& S) { exchange_units(T, S, comm, rank, nranks); }
+  void exchange(Tier& T, const Tier::Split& S) {
+    exchange_units(T, S, comm, rank, nranks);
+    if (nranks > 1)
+      comm::count("mg_tier_exchange", comm::Pattern::allgather, static_cast<int>(&T - tiers.data()), 1,
+                  static_cast<long long>(sizeof(double)) * (S.displs.back() + S.counts.back() - S.counts[static_cast<std::size_t>(rank)]));
+  }
 
   int locate(int t, const Cell& I) const { return xcfc::locate(tiers[static_cast<std::size_t>(t)], I); }
 
@@ -170,6 +177,7 @@ void CompositeMultigrid::Impl::exchange_footprint_values(int t, int per, Values&
   const auto [u0, u1] = mine(S);
   for (std::size_t u = u0; u < u1; ++u) visit(u, [&](double& x) { own.push_back(x); });
   MPI_Allgatherv(own.data(), static_cast<int>(own.size()), MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, comm);
+  comm::count("mg_footprint_exchange", comm::Pattern::allgather, t, 1, static_cast<long long>(sizeof(double) * (all.size() - own.size())));
   for (std::size_t r = 0; r < R; ++r) {
     if (static_cast<int>(r) == rank) continue;
     auto at = static_cast<std::size_t>(displs[r]);

@@ -12,6 +12,7 @@
 #include "boundary_ghosts.hpp"
 #include "factor_cache.hpp"
 #include "level.hpp"
+#include "remnant/comm_counters.hpp"
 #include "work_partition.hpp"
 
 namespace remnant::xcfc {
@@ -29,6 +30,7 @@ struct Multigrid::Impl {
   Impl& operator=(const Impl&) = delete;
 
   void count(std::size_t l, long long n) {
+    comm::count_work("mg_base_relax", static_cast<int>(l), n);
     relaxed_all += n;
     if (l == 0) relaxed_fine += n;
   }

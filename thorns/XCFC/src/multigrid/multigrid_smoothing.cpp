@@ -12,6 +12,7 @@
 #include "line_relaxation_3d.hpp"
 #include "multigrid_impl.hpp"
 #include "point_relaxation.hpp"
+#include "remnant/comm_counters.hpp"
 #include "shell_relaxation.hpp"
 
 namespace remnant::xcfc {
@@ -107,6 +108,8 @@ void Multigrid::Impl::smooth_lines_3d(std::size_t l, const ScalarEquation& eq, i
     line_recv.resize(static_cast<std::size_t>(split.displs.back() + split.counts.back()));
     MPI_Allgatherv(line_send.data(), static_cast<int>(line_send.size()), MPI_DOUBLE, line_recv.data(), split.counts.data(),
                    split.displs.data(), MPI_DOUBLE, work.communicator());
+    comm::count("mg_base_lines_allgather", comm::Pattern::allgather, static_cast<int>(l), 1,
+                static_cast<long long>(sizeof(double) * (line_recv.size() - line_send.size())));
     std::size_t at = 0;
     for (int r = 0; r < P; ++r) at = unpack_lines_3d(L, d, colour, cut(r), cut(r + 1), line_recv, at);
   }

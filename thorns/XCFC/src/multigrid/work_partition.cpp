@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "remnant/comm_counters.hpp"
+
 namespace remnant::xcfc {
 
 WorkPartition::WorkPartition(MPI_Comm c) {
@@ -145,6 +147,8 @@ void WorkPartition::to_columns(std::size_t l, std::vector<double>& a) {
       }
   }
   received_ += static_cast<long long>(sizeof(double)) * (static_cast<long long>(m) - p.tc_r[me]);
+  comm::count("mg_base_transpose", comm::Pattern::alltoall, static_cast<int>(l), 1,
+              static_cast<long long>(sizeof(double)) * (static_cast<long long>(m) - p.tc_r[me]));
 }
 
 void WorkPartition::to_slabs(std::size_t l, std::vector<double>& a) {
@@ -170,6 +174,8 @@ void WorkPartition::to_slabs(std::size_t l, std::vector<double>& a) {
       }
   }
   received_ += static_cast<long long>(sizeof(double)) * (static_cast<long long>(m) - p.ts_r[me]);
+  comm::count("mg_base_transpose", comm::Pattern::alltoall, static_cast<int>(l), 1,
+              static_cast<long long>(sizeof(double)) * (static_cast<long long>(m) - p.ts_r[me]));
 }
 
 void WorkPartition::columns_to_root(std::size_t l, std::vector<double>& a, int ncols) {
@@ -193,6 +199,8 @@ void WorkPartition::columns_to_root(std::size_t l, std::vector<double>& a, int n
     for (int i = 0; i < ncols; ++i, ++m)
       if (j >= p.hi) v[L.at(i, j, 0)] = p.trecv[m];  // rank 0's own rows are j < hi
   received_ += static_cast<long long>(sizeof(double)) * static_cast<long long>(all - static_cast<std::size_t>(p.root_counts[0]));
+  comm::count("mg_base_root_gather", comm::Pattern::gather, static_cast<int>(l), 1,
+              static_cast<long long>(sizeof(double)) * static_cast<long long>(all - static_cast<std::size_t>(p.root_counts[0])));
 }
 
 void WorkPartition::columns_from_root(std::size_t l, std::vector<double>& a, int ncols) {
@@ -212,6 +220,7 @@ void WorkPartition::columns_from_root(std::size_t l, std::vector<double>& a, int
   for (int j = p.lo; j < p.hi; ++j)
     for (int i = 0; i < ncols; ++i) v[L.at(i, j, 0)] = p.trecv[m++];
   received_ += static_cast<long long>(sizeof(double)) * mine;
+  comm::count("mg_base_root_scatter", comm::Pattern::gather, static_cast<int>(l), 1, static_cast<long long>(sizeof(double)) * mine);
 }
 
 int WorkPartition::neighbour(int dr) const {
@@ -219,7 +228,10 @@ int WorkPartition::neighbour(int dr) const {
   return r >= 0 && r < nranks_ ? r : MPI_PROC_NULL;
 }
 double WorkPartition::global_max(double m) const {
-  if (nranks_ > 1) MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, comm);
+  if (nranks_ > 1) {
+    MPI_Allreduce(MPI_IN_PLACE, &m, 1, MPI_DOUBLE, MPI_MAX, comm);
+    comm::count("mg_base_allreduce", comm::Pattern::allreduce, -1, 1, sizeof(double));
+  }
   return m;
 }
 void WorkPartition::replicate(std::size_t l, std::vector<double>& a, bool ghosted) const {
@@ -231,6 +243,7 @@ void WorkPartition::replicate(std::size_t l, std::vector<double>& a, bool ghoste
   long long n = 0;
   for (int r = 0; r < nranks_; ++r) n += r == rank_ ? 0 : c[static_cast<std::size_t>(r)];
   received_ += static_cast<long long>(sizeof(double)) * n;
+  comm::count("mg_base_allgather", comm::Pattern::allgather, static_cast<int>(l), 1, static_cast<long long>(sizeof(double)) * n);
 }
 void WorkPartition::halo(std::size_t l, std::vector<double>& a) {
   Part& p = parts[l];
@@ -243,12 +256,16 @@ void WorkPartition::halo(std::size_t l, std::vector<double>& a) {
   MPI_Sendrecv(plane(p.lo), w, MPI_DOUBLE, neighbour(-1), 12, plane(p.hi), w, MPI_DOUBLE, neighbour(1), 12, comm,
                MPI_STATUS_IGNORE);
   received_ += static_cast<long long>(sizeof(double)) * w * ((rank_ > 0) + (rank_ + 1 < nranks_));
+  comm::count("mg_base_halo", comm::Pattern::p2p, static_cast<int>(l), (rank_ > 0) + (rank_ + 1 < nranks_),
+              static_cast<long long>(sizeof(double)) * w * ((rank_ > 0) + (rank_ + 1 < nranks_)));
   if (!p.flip) return;
   const Level& L = (*lv)[l];
   for (int j = p.lo; j < p.hi; ++j) p.sbuf[static_cast<std::size_t>(j - p.lo)] = v[L.at(0, j, 0)];
   MPI_Allgatherv(p.sbuf.data(), p.hi - p.lo, MPI_DOUBLE, p.rbuf.data(), p.col_counts.data(), p.col_displs.data(),
                  MPI_DOUBLE, comm);
   for (int j = 0; j < L.shape.n[1]; ++j) v[L.at(0, j, 0)] = p.rbuf[static_cast<std::size_t>(j)];
+  comm::count("mg_base_allgather", comm::Pattern::allgather, static_cast<int>(l), 1,
+              static_cast<long long>(sizeof(double)) * (L.shape.n[1] - (p.hi - p.lo)));
 }
 void WorkPartition::exchange_columns(std::size_t l, std::vector<double>& a) {
   Part& p = parts[l];
@@ -270,6 +287,8 @@ void WorkPartition::exchange_columns(std::size_t l, std::vector<double>& a) {
                MPI_STATUS_IGNORE);
   if (rank_ + 1 < nranks_) unpack(p.line_hi);
   received_ += static_cast<long long>(sizeof(double)) * n1 * ((rank_ > 0) + (rank_ + 1 < nranks_));
+  comm::count("mg_base_halo", comm::Pattern::p2p, static_cast<int>(l), (rank_ > 0) + (rank_ + 1 < nranks_),
+              static_cast<long long>(sizeof(double)) * n1 * ((rank_ > 0) + (rank_ + 1 < nranks_)));
 }
 void WorkPartition::gather_columns(std::size_t l, std::vector<double>& a) {
   Part& p = parts[l];
@@ -282,6 +301,8 @@ void WorkPartition::gather_columns(std::size_t l, std::vector<double>& a) {
   MPI_Allgatherv(p.sbuf.data(), static_cast<int>(m), MPI_DOUBLE, p.gbuf.data(), p.blk_counts.data(),
                  p.blk_displs.data(), MPI_DOUBLE, comm);
   received_ += static_cast<long long>(sizeof(double)) * (static_cast<long long>(n0) * n1 - static_cast<long long>(m));
+  comm::count("mg_base_allgather", comm::Pattern::allgather, static_cast<int>(l), 1,
+              static_cast<long long>(sizeof(double)) * (static_cast<long long>(n0) * n1 - static_cast<long long>(m)));
   m = 0;
   for (int i = 0; i < n0; ++i)
     for (int j = 0; j < n1; ++j) v[L.at(i, j, 0)] = p.gbuf[m++];
