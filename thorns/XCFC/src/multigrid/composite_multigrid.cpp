@@ -177,6 +177,17 @@ const Recipes& CompositeMultigrid::Impl::recipes_for(const ScalarEquation& eq) {
   return R;
 }
 
+std::size_t CompositeMultigrid::recipe_bytes() const {
+  std::size_t n = 0;
+  for (const auto& [sig, R] : impl_->recipes) {
+    n += R.terms.capacity() * sizeof(StoredTerm) + R.points.capacity() * sizeof(Point3);
+    for (const auto* lists : {&R.ghosts, &R.window})
+      for (const auto& tier : *lists)
+        for (const auto& list : tier) n += list.capacity() * sizeof(Recipe);
+  }
+  return n;
+}
+
 void CompositeMultigrid::Impl::add_mode_term(Level& L, AngularMode mode) {
   L.k = L.k_eq;
   if (mode == AngularMode::none) return;
