@@ -274,7 +274,7 @@ bool AmrGrid::move_to(std::vector<BlockKey> leaves) {
     throw RunError("Grid: the new mesh is not 2:1 balanced (internal error): " + why);
   auto make = [this](std::int64_t gid, const BlockKey& key) { return make_block(gid, key); };
   auto blocks = migrate_blocks(*forest_, block_ptrs_, *next, make, make, *vars_, *geometry_, *maps_, face_vectors_, rank_,
-                               exchange_comm_);
+                               exchange_comm_, &blocks_);
   install(std::move(next), std::move(blocks));
   return true;
 }

@@ -54,7 +54,7 @@ std::string AmrGrid::describe() const {
       << "  memory      about " << format_bytes(memory.bytes_per_rank) << " per rank (" << format_bytes(memory.bytes_per_block)
       << " per block: variables with ghosts, Runge-Kutta copies); this machine has "
       << format_bytes(machine_memory_bytes()) << "\n"
-      << "  ghosts      " << config_.ghost_zones << "\n"
+      << format_group_memory(config_, *vars_) << "  ghosts      " << config_.ghost_zones << "\n"
       << "  min spacing " << min_spacing_ << " (proper length)\n"
       << "  boundaries  ";
   static const char* const names[3][3] = {{"x", "y", "z"}, {"R", "z", "phi"}, {"r", "theta", "phi"}};

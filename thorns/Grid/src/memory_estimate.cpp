@@ -27,21 +27,49 @@ std::int64_t level0_blocks(const GridConfig& c) {
   return blocks;
 }
 
-MemoryEstimate estimate_memory(const GridConfig& c, const VariableRegistry& vars, std::int64_t total_blocks,
-                               int nranks) {
-  MemoryEstimate m;
+std::vector<GroupMemory> group_memory(const GridConfig& c, const VariableRegistry& vars) {
+  std::vector<GroupMemory> out;
   const auto evolved = vars.evolved();
   for (const auto& g : vars.groups()) {
     const auto st = staggering(g.centering);
-    double points = 1;
-    for (int d = 0; d < 3; ++d) {
+    double points = 1, interior = 1;
+    for (int d = 0; d < c.dimension; ++d) {
       const auto ud = static_cast<std::size_t>(d);
-      const bool used = d < c.dimension;
-      points *= used ? c.block_size[ud] + 2 * c.ghost_zones + st[ud] : 1;
+      points *= c.block_size[ud] + 2 * c.ghost_zones + st[ud];
+      interior *= c.block_size[ud] + st[ud];
     }
     const bool is_evolved = std::find(evolved.begin(), evolved.end(), g.id) != evolved.end();
-    m.bytes_per_block += points * g.ncomp() * sizeof(double) * (is_evolved ? 2 : 1);
+    const double per_point = g.ncomp() * static_cast<double>(sizeof(double));
+    out.push_back({g.full_name(), g.ncomp(), points * per_point, interior * per_point,
+                   is_evolved ? interior * per_point : 0.0});
   }
+  return out;
+}
+
+std::string format_group_memory(const GridConfig& c, const VariableRegistry& vars) {
+  double cells = 1;
+  for (int d = 0; d < c.dimension; ++d) cells *= c.block_size[static_cast<std::size_t>(d)];
+  std::ostringstream out;
+  char line[160];
+  double total = 0;
+  out << "  memory by group (per block with ghosts; bytes per interior cell; +RK: MoL's copy)\n";
+  for (const GroupMemory& g : group_memory(c, vars)) {
+    const double bytes = g.bytes + g.runge_kutta_bytes;
+    total += bytes;
+    std::snprintf(line, sizeof line, "    %-36s %2d comp %10s %8.0f B/cell%s\n", g.name.c_str(), g.ncomp,
+                  format_bytes(bytes).c_str(), bytes / cells, g.runge_kutta_bytes > 0 ? " (+RK)" : "");
+    out << line;
+  }
+  std::snprintf(line, sizeof line, "    %-36s         %10s %8.0f B/cell\n", "all groups", format_bytes(total).c_str(),
+                total / cells);
+  out << line;
+  return out.str();
+}
+
+MemoryEstimate estimate_memory(const GridConfig& c, const VariableRegistry& vars, std::int64_t total_blocks,
+                               int nranks) {
+  MemoryEstimate m;
+  for (const GroupMemory& g : group_memory(c, vars)) m.bytes_per_block += g.bytes + g.runge_kutta_bytes;
   m.blocks_per_rank = (total_blocks + nranks - 1) / std::max(1, nranks);
   m.bytes_per_rank = m.bytes_per_block * static_cast<double>(m.blocks_per_rank) +
                      kForestBytesPerBlock * static_cast<double>(total_blocks);

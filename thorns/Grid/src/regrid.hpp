@@ -23,11 +23,14 @@ using BlockFactory = std::function<std::unique_ptr<Block>(std::int64_t gid, cons
 // prolongation reads them). New children get the face vectors `face_vectors` by the
 // divergence-preserving prolongation (taking the shared faces of same-level blocks that the old
 // mesh had already, across periodic faces too), every other group by its transfer kernel.
-// Returns this rank's blocks of `new_forest` in gid order. Collective.
+// Returns this rank's blocks of `new_forest` in gid order. Collective. With `owned_old` (the
+// owners of `old_blocks`, same order), unchanged blocks of this rank are moved out of it instead of
+// copied (their pointers in `old_blocks` stay valid until the returned blocks are dropped).
 std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std::span<Block* const> old_blocks,
                                                    const Forest& new_forest, const BlockFactory& make_new,
                                                    const BlockFactory& make_scratch, const VariableRegistry& vars,
                                                    const LevelGeometry& geometry, const BoundaryMaps& maps,
-                                                   std::span<const FaceVector> face_vectors, int rank, MPI_Comm comm);
+                                                   std::span<const FaceVector> face_vectors, int rank, MPI_Comm comm,
+                                                   std::vector<std::unique_ptr<Block>>* owned_old = nullptr);
 
 }  // namespace remnant::grid

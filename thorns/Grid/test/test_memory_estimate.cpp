@@ -62,10 +62,11 @@ TEST(MemoryEstimate, CountsGhostsRungeKuttaCopiesAndTheForest) {
   const VariableRegistry vars = evolved_scalar();
   EXPECT_EQ(level0_blocks(checked_config), 10);
   const MemoryEstimate m = estimate_memory(checked_config, vars, 10, 3);
-  // 70 points with ghosts; u twice (state and Runge-Kutta copy), u_rhs once.
-  EXPECT_DOUBLE_EQ(m.bytes_per_block, 70.0 * 8 * 3);
+  // 70 points with ghosts for u and u_rhs, and MoL's copy of u's 64 interior points (issue 21,
+  // goal 7: it held the 70 before).
+  EXPECT_DOUBLE_EQ(m.bytes_per_block, (70.0 + 70.0 + 64.0) * 8);
   EXPECT_EQ(m.blocks_per_rank, 4);
-  EXPECT_DOUBLE_EQ(m.bytes_per_rank, 4 * 70.0 * 8 * 3 + 200.0 * 10);
+  EXPECT_DOUBLE_EQ(m.bytes_per_rank, 4 * (70.0 + 70.0 + 64.0) * 8 + 200.0 * 10);
   EXPECT_GT(machine_memory_bytes(), 1e8);
 }
 
@@ -100,4 +101,35 @@ TEST(MemoryEstimate, GridFromParametersRefusesTheMachineBeforeAllocating) {
     EXPECT_NE(msg.find("run.yaml:4:11"), std::string::npos) << msg;
     EXPECT_NE(msg.find("this machine's memory"), std::string::npos) << msg;
   }
+}
+
+// The per-group table of --print-grid (issue 21, goal 7) is what a Block allocates: staggered
+// points and ghosts included, in 3D, and MoL's copy counts the interior of evolved groups only.
+TEST(MemoryEstimate, GroupTableMatchesTheBlockAllocation) {
+  GridConfig c;
+  c.dimension = 3;
+  c.ncells = {32, 32, 32};
+  c.block_size = {16, 16, 16};
+  c.ghost_zones = 3;
+  VariableRegistry vars = evolved_scalar();
+  VariableGroupSpec face;
+  face.thorn = "T";
+  face.name = "bx";
+  face.centering = Centering::face_x;
+  face.components = expand_tensor(TensorKind::scalar, "bx");
+  vars.add(face);
+  const auto groups = group_memory(c, vars);
+  ASSERT_EQ(groups.size(), 3u);
+  Block b(0, 0, {0, 0, 0}, {16, 16, 16}, {3, 3, 3}, {0, 0, 0}, {1, 1, 1}, vars);
+  for (int g = 0; g < vars.size(); ++g)
+    EXPECT_DOUBLE_EQ(groups[static_cast<std::size_t>(g)].bytes, static_cast<double>(b.size(g) * sizeof(double)));
+  EXPECT_EQ(groups[0].name, "T::u");
+  EXPECT_DOUBLE_EQ(groups[0].runge_kutta_bytes, 16.0 * 16 * 16 * 8);
+  EXPECT_DOUBLE_EQ(groups[1].runge_kutta_bytes, 0.0);
+  EXPECT_DOUBLE_EQ(groups[2].interior_bytes, 17.0 * 16 * 16 * 8);
+  const std::string table = format_group_memory(c, vars);
+  // u: (22^3 + 16^3) x 8 bytes over 16^3 cells; all: (22^3 + 22^3 + 23 x 22^2 + 16^3) x 8 / 16^3.
+  EXPECT_NE(table.find("T::u"), std::string::npos) << table;
+  EXPECT_NE(table.find("       29 B/cell (+RK)"), std::string::npos) << table;
+  EXPECT_NE(table.find("       71 B/cell\n"), std::string::npos) << table;
 }

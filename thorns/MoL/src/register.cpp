@@ -10,6 +10,7 @@
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
 #include "runge_kutta.hpp"
+#include "step_start_copy.hpp"
 
 namespace remnant::mol {
 namespace {
@@ -21,9 +22,8 @@ struct State {
   std::size_t next_stage = 0;
   double t0 = 0;
   double wall_start = 0;
-  // Copy of every evolved group at the start of the step, per local block.
-  std::map<std::pair<std::int64_t, int>, std::vector<double>> u0;
-  std::vector<std::int64_t> u0_blocks;  // the local blocks u0 was made for (a regrid changes them)
+  // Every evolved group's interior at the start of the step, per local block.
+  StepStartCopy u0;
   std::int64_t first_iteration = -1;    // of this process's run (a recovered run starts later)
   bool warned_dt = false;
   // Published as service "failure_hint": the driver adds it to a fatal error's message.
@@ -110,17 +110,7 @@ bool next_substep(Context& ctx) {
   auto& clock = ctx.clock();
   if (s.next_stage == 0) {
     s.t0 = clock.time;
-    std::vector<std::int64_t> blocks;
-    for (Block* b : ctx.grid().local_blocks()) blocks.push_back(b->gid);
-    if (blocks != s.u0_blocks) {
-      s.u0.clear();  // drop copies of blocks that moved away or were derefined
-      s.u0_blocks = blocks;
-    }
-    for (Block* b : ctx.grid().local_blocks())
-      for (int g : ctx.vars().evolved()) {
-        auto& copy = s.u0[{b->gid, g}];
-        copy.assign(b->data(g), b->data(g) + b->size(g));
-      }
+    s.u0.save(ctx.grid().local_blocks(), ctx.vars().evolved(), ctx.vars());
   }
   if (s.next_stage == s.stages->size()) {
     s.next_stage = 0;
@@ -141,13 +131,11 @@ void update(Context& ctx) {
   for (Block* b : ctx.grid().local_blocks())
     for (int g : ctx.vars().evolved()) {
       const auto& spec = ctx.vars().group(g);
-      const double* u0 = s.u0.at({b->gid, g}).data();
       // Interior points: cells, and for face groups the faces of the interior, both block faces
       // included (n + 1 along a used staggered direction).
-      const auto extent = b->extent(spec.centering);
+      const auto points = interior_points(*b, spec.centering);
       // Face fields (constrained transport) in increment form: see runge_kutta_increment_update.
       const bool increment = spec.centering != Centering::cell && st.a + st.b == 1.0;
-      const int points[3] = {extent[0] - 2 * b->ng[0], extent[1] - 2 * b->ng[1], extent[2] - 2 * b->ng[2]};
       for (int c = 0; c < spec.ncomp(); ++c) {
         Field u = b->field(g, c);
         Field rhs = b->field(spec.rhs_id, c);
@@ -156,7 +144,7 @@ void update(Context& ctx) {
           for (int j = 0; j < points[1]; ++j) {
             double* urow = &u(0, j, k);
             const double* rrow = &rhs(0, j, k);
-            const double* u0row = u0 + (urow - b->data(g));
+            const double* u0row = s.u0.row(b->gid, g, c, j, k);
             if (increment)
               runge_kutta_increment_update(urow, u0row, rrow, static_cast<std::size_t>(points[0]), st.b, dt);
             else

@@ -11,12 +11,16 @@ void add_recipe(Recipes& R, std::vector<Recipe>& list, std::size_t target, std::
   });
   const std::size_t begin = R.terms.size();
   for (const Term& x : terms) {
-    Term* last = R.terms.size() > begin ? &R.terms.back() : nullptr;
+    StoredTerm* last = R.terms.size() > begin ? &R.terms.back() : nullptr;
     if (last && x.kind != Term::dirichlet && last->kind == x.kind && last->tier == x.tier && last->patch == x.patch &&
-        last->p == x.p && last->mask == x.mask)
+        last->p == x.p && last->mask == x.mask) {
       last->w += x.w;
-    else
-      R.terms.push_back(x);
+    } else if (x.kind == Term::dirichlet) {
+      R.terms.push_back({x.kind, x.mask, x.tier, x.patch, static_cast<std::ptrdiff_t>(R.points.size()), x.w});
+      R.points.push_back(x.x);
+    } else {
+      R.terms.push_back({x.kind, x.mask, x.tier, x.patch, x.p, x.w});
+    }
   }
   list.push_back({target, begin, R.terms.size()});
   terms.clear();

@@ -50,8 +50,14 @@ Level::Level(const GridShape& s) : shape(s) {
   volume.assign(nc, 0.0);
   diagonal.assign(nc, 0.0);
   for (int d = 0; d < 3; ++d) a_lo[d].assign(s.used(d) ? nc : 0, 0.0), a_hi[d].assign(s.used(d) ? nc : 0, 0.0);
-  for (auto& m : mode_k) m.assign(nc, 0.0);
   const CoordinateSystem cs = s.coordinates;
+  // Only the geometries below have angular-mode terms: elsewhere (3D, Cartesian) the arrays stay
+  // empty, read as zeros (3 doubles per cell of every level before; issue 21, goal 7).
+  const bool m1 = (cs == CoordinateSystem::cylindrical && s.dimension <= 2) ||
+                  (cs == CoordinateSystem::spherical && s.dimension == 2);
+  const bool l1 = cs == CoordinateSystem::spherical && s.dimension == 1;
+  if (m1) mode_k[static_cast<int>(AngularMode::axisymmetric_m1)].assign(nc, 0.0);
+  if (l1) mode_k[static_cast<int>(AngularMode::spherical_l1)].assign(nc, 0.0);
   for (int k = 0; k < s.n[2]; ++k)
     for (int j = 0; j < s.n[1]; ++j)
       for (int i = 0; i < s.n[0]; ++i) {

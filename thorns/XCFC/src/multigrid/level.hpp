@@ -19,7 +19,7 @@ struct Level {
   // sqrt(f) f^dd / (dx_d * volume).
   std::array<std::vector<double>, 3> a_lo, a_hi;
   std::vector<double> diagonal;                   // sum of the a's
-  std::array<std::vector<double>, 3> mode_k;      // point coefficient of each AngularMode
+  std::array<std::vector<double>, 3> mode_k;      // point coefficient of each AngularMode (empty: zero)
   double max_diagonal = 0;                        // scale of the round-off floor of the residual
   // Robin fall-off factors (r_inner / r_ghost)^p of the outer-face ghosts for p = 1 and 2, per
   // [direction][side], indexed t1 + n[e1] * t2 over the face (e1, e2 = d+1, d+2 mod 3): geometry

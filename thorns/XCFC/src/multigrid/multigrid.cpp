@@ -88,6 +88,10 @@ void Multigrid::Impl::add_mode_term(Level& L, AngularMode mode) {
   L.k = L.k_eq;
   if (mode == AngularMode::none) return;
   const auto& mk = L.mode_k[static_cast<int>(mode)];
+  if (mk.empty()) {  // a geometry without this mode's term (Level::Level): its term is zero
+    for (double& k : L.k) k += 0.0;
+    return;
+  }
   for (std::size_t q = 0; q < L.k.size(); ++q) L.k[q] += mk[q];
 }
 

@@ -128,6 +128,9 @@ class CompositeMultigrid {
   SolveStats solve(const CompositeEquation& eq, CompositeField& u, const SolveSettings& s);
   // Max-norm residual of the composite equation over the leaf cells.
   double residual_norm(const CompositeEquation& eq, const CompositeField& u);
+  // Bytes held by the ghost recipes built so far (one set per boundary signature; memory
+  // accounting, issue 21 goal 7).
+  std::size_t recipe_bytes() const;
 
  private:
   struct Impl;
