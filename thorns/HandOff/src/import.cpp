@@ -163,6 +163,7 @@ void check_parameters(Context& ctx) {
                      "HandOff imports densitised conserved variables: XCFC::initial_metric must be from_conserved (is " +
                          ctx.param<std::string>("XCFC", "initial_metric") + ")");
   TargetDomain::from_parameters(p);  // a grid HandOff cannot fill is an input error now
+  check_centre_on_mirrors(p, reflection_parameter(p));  // the files' own mirrors: when they are read
 }
 
 void initial(Context& ctx) {

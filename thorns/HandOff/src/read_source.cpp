@@ -8,6 +8,8 @@
 #include "HandOff/remnant_reader.hpp"
 #include "HydroBase/magnetic_field.hpp"
 #include "magnetic_source.hpp"
+#include "remnant/error.hpp"
+#include "remnant/parameters.hpp"
 #include "source_quantities.hpp"
 
 namespace remnant::handoff {
@@ -46,13 +48,34 @@ void check_magnetic_field(const Context& ctx, SourceData& src, std::vector<std::
 
 }  // namespace
 
+std::array<bool, 3> reflection_parameter(const Parameters& p) {
+  std::array<bool, 3> mirrors{false, false, false};
+  for (const auto& r : p.get<std::vector<std::string>>("HandOff", "reflection")) mirrors[static_cast<std::size_t>(r[0] - 'x')] = true;
+  return mirrors;
+}
+
+void check_centre_on_mirrors(const Parameters& p, const std::array<bool, 3>& mirrors, const std::array<bool, 3>& from_files) {
+  const auto& centre = p.get<std::vector<double>>("HandOff", "centre");
+  for (std::size_t d = 0; d < 3; ++d) {
+    if (!mirrors[d] || centre[d] == 0) continue;
+    const std::string axis(1, static_cast<char>('x' + d));
+    const std::string mirror_from = from_files[d] ? "ReflectionSymmetry::reflection_" + axis + " in the files' parameter dump"
+                                                  : "HandOff::reflection";
+    throw InputError(p.origin("HandOff", "centre"),
+                     "HandOff::centre = [" + format_number(centre[0]) + ", " + format_number(centre[1]) + ", " +
+                         format_number(centre[2]) + "] has " + axis + " = " + format_number(centre[d]) +
+                         ", but the data are mirrored across " + axis + " = 0 (" + mirror_from +
+                         "): unfolded they are symmetric about that plane, so their centre lies on it; allowed: HandOff::centre[" +
+                         std::to_string(d) + "] = 0 along the mirrored axis " + axis + " (any value along an axis without a mirror)");
+  }
+}
+
 std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::string>& notes) {
   const auto files = expand_file_patterns(ctx.param<std::vector<std::string>>("HandOff", "files"));
   const auto& format = ctx.param<std::string>("HandOff", "format");
   const auto& parity = ctx.param<std::string>("HandOff", "magnetic_parity");
   auto src = std::make_shared<SourceData>();
-  std::array<bool, 3> mirrors{false, false, false};
-  for (const auto& r : ctx.param<std::vector<std::string>>("HandOff", "reflection")) mirrors[static_cast<std::size_t>(r[0] - 'x')] = true;
+  const std::array<bool, 3> mirrors = reflection_parameter(ctx.params());
   if (format == "carpet") {
     CarpetOptions o;
     o.files = files;
@@ -71,6 +94,9 @@ std::shared_ptr<SourceData> read_source(const Context& ctx, std::vector<std::str
     *src = read_remnant_volume(files, mirrors, parity != "vector");
   }
   // The remnant's centre onto the grid's origin (after unfolding: mirrors are the data's x^d = 0).
+  std::array<bool, 3> mirrors_from_files{};
+  for (std::size_t d = 0; d < 3; ++d) mirrors_from_files[d] = src->reflection[d] && !mirrors[d];
+  check_centre_on_mirrors(ctx.params(), src->reflection, mirrors_from_files);
   const auto& centre = ctx.param<std::vector<double>>("HandOff", "centre");
   if (centre[0] != 0 || centre[1] != 0 || centre[2] != 0) {
     for (auto& L : src->levels)

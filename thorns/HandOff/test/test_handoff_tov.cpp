@@ -299,3 +299,22 @@ TEST(HandOffTOV, MagneticFieldIsRefusedUnlessIgnored) {
   const Result r = hand_off(data, {"HandOff::ignore_magnetic_field=true"});
   EXPECT_NEAR(r.report.imported.rest_mass / r.report.source_grid.rest_mass, 1.0, 1e-13);
 }
+
+// HandOff::centre off a mirror plane of the data: the unfolded data are symmetric about the plane,
+// so their centre lies on it; a non-zero component along a mirrored axis is an input error naming
+// the parameter, its value, the mirrored axis (and where the mirror came from) and what is allowed.
+TEST(HandOffTOV, CentreOffAMirrorPlaneIsAnError) {
+  const TovCarpet data(kAll);  // an octant: the files declare the mirrors x, y, z = 0
+  std::string e = error_of(data, {"HandOff::centre=[0,0,6]"});
+  EXPECT_NE(e.find("HandOff::centre"), std::string::npos) << e;
+  EXPECT_NE(e.find("command line argument"), std::string::npos) << e;  // where it was set
+  EXPECT_NE(e.find("z = 6"), std::string::npos) << e;
+  EXPECT_NE(e.find("mirrored across z = 0"), std::string::npos) << e;
+  EXPECT_NE(e.find("ReflectionSymmetry::reflection_z"), std::string::npos) << e;
+  EXPECT_NE(e.find("HandOff::centre[2] = 0"), std::string::npos) << e;
+  // A mirror the user names is checked with the parameters, before any file is read.
+  e = error_of(data, {"HandOff::files=[/nonexistent/run/*.h5]", "HandOff::reflection=[y]", "HandOff::centre=[0,-2.5,0]"});
+  EXPECT_NE(e.find("y = -2.5"), std::string::npos) << e;
+  EXPECT_NE(e.find("(HandOff::reflection)"), std::string::npos) << e;
+  EXPECT_NE(e.find("HandOff::centre[1] = 0"), std::string::npos) << e;
+}
