@@ -13,15 +13,13 @@
 #include <filesystem>
 #include <span>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "HandOff/handoff_state.hpp"
 #include "TOV/tov_solver.hpp"
 #include "remnant/driver.hpp"
 #include "synthetic_carpet.hpp"
-
-std::span<const remnant::ThornEntry> remnant_compiled_thorns();
+#include "tov_carpet_data.hpp"
 
 namespace {
 
@@ -29,19 +27,9 @@ using namespace remnant;
 
 constexpr double kFloor = 1e-10;  // GRHydro::rho_abs_min of the real run
 
-struct FlooredTov {
-  std::unique_ptr<tov::ColdSlice> slice = tov::polytrope_slice(100.0, 2.0, 0.5);
-  tov::TovStar star{*slice, 1.28e-3};
-  std::filesystem::path dir;
-  std::vector<std::string> files;
-  int rank = 0;
+struct FlooredTov : handoff_test::TovCarpetData {
   // metric = false: only HydroBase variables (the kuibit run's 3D output has rho and vel alone).
-  explicit FlooredTov(bool metric = true) {
-    long pid = static_cast<long>(::getpid());
-    MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    dir = std::filesystem::temp_directory_path() / ("handoff_etk_" + std::to_string(pid) + (metric ? "" : "_nometric"));
-    if (rank == 0) std::filesystem::create_directories(dir);
+  explicit FlooredTov(bool metric = true) : TovCarpetData(metric ? "handoff_etk" : "handoff_etk_nometric") {
     handoff::synthetic::SyntheticCarpet spec;
     spec.variables = {"HYDROBASE::rho", "HYDROBASE::press", "HYDROBASE::eps"};
     if (metric)
@@ -53,32 +41,21 @@ struct FlooredTov {
     spec.ghosts_parameter = "out3D_ghosts";
     spec.stem = "tov.xyz";
     spec.buffer = 0;
-    files = handoff::synthetic::write_synthetic_carpet(dir.string(), spec, [this](const std::string& v, int, double x, double y, double z) {
+    write(spec, [this](const std::string& v, int, double x, double y, double z) {
       const tov::TovPoint p = star.at(std::sqrt(x * x + y * y + z * z));
       if (v == "HYDROBASE::rho") return std::max(p.rho, kFloor);
       if (v == "HYDROBASE::press") return 100.0 * std::pow(std::max(p.rho, kFloor), 2.0);
       if (v == "HYDROBASE::eps") return 100.0 * std::max(p.rho, kFloor);
       if (v == "ADMBASE::gxx" || v == "ADMBASE::gyy" || v == "ADMBASE::gzz") return std::pow(p.psi, 4);
       return 0.0;
-    }, rank == 0);
-    MPI_Barrier(MPI_COMM_WORLD);
-  }
-  ~FlooredTov() {
-    MPI_Barrier(MPI_COMM_WORLD);
-    if (rank == 0) std::filesystem::remove_all(dir);
+    });
   }
 };
 
 handoff::HandOffReport hand_off(const FlooredTov& data, const std::vector<std::string>& more) {
-  static const ThornCatalog catalog(remnant_compiled_thorns());
-  SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/handoff_tov_cyl_2d.yaml";
-  o.quiet = true;
-  std::string files = "HandOff::files=[";
-  for (std::size_t i = 0; i < data.files.size(); ++i) files += (i ? "," : "") + data.files[i];
-  o.overrides = {files + "]", "MoL::final_time=0", "HandOff::buffer_zones=0", "Flesh::out_dir=" + (data.dir / "out").string()};
-  o.overrides.insert(o.overrides.end(), more.begin(), more.end());
-  Simulation sim(catalog, o, MPI_COMM_WORLD);
+  std::vector<std::string> settings = {"MoL::final_time=0", "HandOff::buffer_zones=0", "Flesh::out_dir=" + (data.dir / "out").string()};
+  settings.insert(settings.end(), more.begin(), more.end());
+  Simulation sim(handoff_test::compiled_catalog(), handoff_test::handoff_options(data, settings), MPI_COMM_WORLD);
   sim.setup_output_and_grid();
   sim.run();
   return sim.context().service<handoff::HandOffState>("HandOff::state").report;

@@ -19,7 +19,6 @@
 #include <sstream>
 #include <span>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "HandOff/handoff_state.hpp"
@@ -27,8 +26,7 @@
 #include "remnant/driver.hpp"
 #include "handoff_profiles.hpp"
 #include "synthetic_carpet.hpp"
-
-std::span<const remnant::ThornEntry> remnant_compiled_thorns();
+#include "tov_carpet_data.hpp"
 
 namespace {
 
@@ -37,20 +35,11 @@ using namespace remnant;
 constexpr double kEps = 0.05;    // gxx, gyy anisotropy at fixed determinant
 constexpr double kDelta = 0.02;  // the data's lapse / the TOV's - 1
 
-struct MetricTov {
-  std::unique_ptr<tov::ColdSlice> slice = tov::polytrope_slice(100.0, 2.0, 0.5);
-  tov::TovStar star{*slice, 1.28e-3};
-  std::filesystem::path dir;
-  std::vector<std::string> files;
-  int rank = 0;
+struct MetricTov : handoff_test::TovCarpetData {
   // centre: the star's centre in the data's coordinates; whole: data of the whole star (no mirrors),
   // else an octant (centre 0).
-  MetricTov(const std::string& name, std::array<double, 3> centre, double eps, double delta, bool whole) {
-    long pid = static_cast<long>(::getpid());
-    MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    dir = std::filesystem::temp_directory_path() / ("handoff_metric_" + name + "_" + std::to_string(pid));
-    if (rank == 0) std::filesystem::create_directories(dir);
+  MetricTov(const std::string& name, std::array<double, 3> centre, double eps, double delta, bool whole)
+      : TovCarpetData("handoff_metric_" + name) {
     handoff::synthetic::SyntheticCarpet spec;
     spec.variables = {"HYDROBASE::rho", "HYDROBASE::press", "HYDROBASE::eps", "ADMBASE::alp", "ADMBASE::gxx",
                       "ADMBASE::gxy", "ADMBASE::gxz", "ADMBASE::gyy", "ADMBASE::gyz", "ADMBASE::gzz"};
@@ -62,26 +51,19 @@ struct MetricTov {
       spec.levels = {{1.0, {c[0] - 15.5, c[1] - 15.5, c[2] - 15.5}, {32, 32, 32}, 0},
                      {0.5, {c[0] - 10, c[1] - 10, c[2] - 10}, {41, 41, 41}, 1}};
     }
-    files = handoff::synthetic::write_synthetic_carpet(dir.string(), spec,
-        [this, c, eps, delta](const std::string& v, int, double x, double y, double z) {
-          const double dx = x - c[0], dy = y - c[1], dz = z - c[2];
-          const tov::TovPoint p = star.at(std::sqrt(dx * dx + dy * dy + dz * dz));
-          const double psi4 = std::pow(p.psi, 4);
-          if (v == "HYDROBASE::rho") return p.rho;
-          if (v == "HYDROBASE::press") return p.press;
-          if (v == "HYDROBASE::eps") return p.eps;
-          if (v == "ADMBASE::alp") return p.alpha * (1 + delta);
-          if (v == "ADMBASE::gxx") return psi4 * (1 + eps);
-          if (v == "ADMBASE::gyy") return psi4 / (1 + eps);
-          if (v == "ADMBASE::gzz") return psi4;
-          return 0.0;
-        },
-        rank == 0);
-    MPI_Barrier(MPI_COMM_WORLD);
-  }
-  ~MetricTov() {
-    MPI_Barrier(MPI_COMM_WORLD);
-    if (rank == 0) std::filesystem::remove_all(dir);
+    write(spec, [this, c, eps, delta](const std::string& v, int, double x, double y, double z) {
+      const double dx = x - c[0], dy = y - c[1], dz = z - c[2];
+      const tov::TovPoint p = star.at(std::sqrt(dx * dx + dy * dy + dz * dz));
+      const double psi4 = std::pow(p.psi, 4);
+      if (v == "HYDROBASE::rho") return p.rho;
+      if (v == "HYDROBASE::press") return p.press;
+      if (v == "HYDROBASE::eps") return p.eps;
+      if (v == "ADMBASE::alp") return p.alpha * (1 + delta);
+      if (v == "ADMBASE::gxx") return psi4 * (1 + eps);
+      if (v == "ADMBASE::gyy") return psi4 / (1 + eps);
+      if (v == "ADMBASE::gzz") return psi4;
+      return 0.0;
+    });
   }
 };
 
@@ -91,16 +73,10 @@ struct Result {
 };
 
 Result hand_off(const MetricTov& data, const std::vector<std::string>& more) {
-  static const ThornCatalog catalog(remnant_compiled_thorns());
-  SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/handoff_tov_cyl_2d.yaml";
-  o.quiet = true;
   const auto out = data.dir / "out";
-  std::string files = "HandOff::files=[";
-  for (std::size_t i = 0; i < data.files.size(); ++i) files += (i ? "," : "") + data.files[i];
-  o.overrides = {files + "]", "MoL::final_time=0", "HandOff::buffer_zones=2", "Flesh::out_dir=" + out.string()};
-  o.overrides.insert(o.overrides.end(), more.begin(), more.end());
-  Simulation sim(catalog, o, MPI_COMM_WORLD);
+  std::vector<std::string> settings = {"MoL::final_time=0", "HandOff::buffer_zones=2", "Flesh::out_dir=" + out.string()};
+  settings.insert(settings.end(), more.begin(), more.end());
+  Simulation sim(handoff_test::compiled_catalog(), handoff_test::handoff_options(data, settings), MPI_COMM_WORLD);
   sim.setup_output_and_grid();
   sim.run();
   Result r;

@@ -15,7 +15,6 @@
 #include <sstream>
 #include <span>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "Analysis/star_diagnostics.hpp"
@@ -24,27 +23,16 @@
 #include "remnant/driver.hpp"
 #include "handoff_profiles.hpp"
 #include "synthetic_carpet.hpp"
-
-std::span<const remnant::ThornEntry> remnant_compiled_thorns();
+#include "tov_carpet_data.hpp"
 
 namespace {
 
 using namespace remnant;
 
-struct TovCarpet {
-  std::unique_ptr<tov::ColdSlice> slice = tov::polytrope_slice(100.0, 2.0, 0.5);
-  tov::TovStar star{*slice, 1.28e-3};
-  std::filesystem::path dir;
-  std::vector<std::string> files;
+struct TovCarpet : handoff_test::TovCarpetData {
   // omega: rigid rotation v = omega (-y, x, 0) inside the star (the data then have a mirror at
   // z = 0 only); b: a uniform Bvec^z of this strength.
-  explicit TovCarpet(const std::vector<std::string>& variables, double omega = 0, double b = 0) {
-    // One folder for all ranks (rank 0's pid); rank 0 writes the files.
-    long pid = static_cast<long>(::getpid());
-    MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
-    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    dir = std::filesystem::temp_directory_path() / ("handoff_tov_" + std::to_string(pid));
-    if (rank == 0) std::filesystem::create_directories(dir);
+  explicit TovCarpet(const std::vector<std::string>& variables, double omega = 0, double b = 0) : TovCarpetData("handoff_tov") {
     handoff::synthetic::SyntheticCarpet spec;
     spec.variables = variables;
     // Level 0: spacing 1 to 15.5 (avoid-origin points); level 1: spacing 0.5 to 10, the star's
@@ -56,7 +44,7 @@ struct TovCarpet {
     }
     spec.iterations = {1024};
     spec.time = 100;
-    files = handoff::synthetic::write_synthetic_carpet(dir.string(), spec, [this, omega, b](const std::string& v, int, double x, double y, double z) {
+    write(spec, [this, omega, b](const std::string& v, int, double x, double y, double z) {
       const tov::TovPoint p = star.at(std::sqrt(x * x + y * y + z * z));
       if (v == "HYDROBASE::vel[0]") return p.rho > 0 ? -omega * y : 0.0;
       if (v == "HYDROBASE::vel[1]") return p.rho > 0 ? omega * x : 0.0;
@@ -67,14 +55,8 @@ struct TovCarpet {
       if (v == "ADMBASE::alp") return p.alpha;
       if (v == "ADMBASE::gxx" || v == "ADMBASE::gyy" || v == "ADMBASE::gzz") return std::pow(p.psi, 4);
       return 0.0;  // velocities, off-diagonal metric
-    }, rank == 0);
-    MPI_Barrier(MPI_COMM_WORLD);
+    });
   }
-  ~TovCarpet() {
-    MPI_Barrier(MPI_COMM_WORLD);
-    if (rank == 0) std::filesystem::remove_all(dir);
-  }
-  int rank = 0;
 };
 
 const std::vector<std::string> kAll = {"HYDROBASE::rho", "HYDROBASE::press", "HYDROBASE::eps", "HYDROBASE::vel[0]",
@@ -88,23 +70,12 @@ struct Result {
   std::vector<std::array<double, 11>> profiles;  // handoff_profiles.tsv
 };
 
-Result hand_off(const TovCarpet& data, std::vector<std::string> overrides) {
-  static const ThornCatalog catalog(remnant_compiled_thorns());
-  SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/handoff_tov_cyl_2d.yaml";
-  o.quiet = true;
+Result hand_off(const TovCarpet& data, const std::vector<std::string>& overrides) {
   const auto out = data.dir / "out";
-  std::string files = "HandOff::files=[";
-  for (std::size_t i = 0; i < data.files.size(); ++i) files += (i ? "," : "") + data.files[i];
-  bool own_files = false;
-  for (const auto& v : overrides) own_files = own_files || v.rfind("HandOff::files=", 0) == 0;
-  o.overrides = std::move(overrides);
-  if (!own_files) o.overrides.push_back(files + "]");
-  o.overrides.push_back("MoL::final_time=0");
-  o.overrides.push_back("HandOff::buffer_zones=2");
-  o.overrides.push_back("Analysis::every=1");
-  o.overrides.push_back("Flesh::out_dir=" + out.string());
-  Simulation sim(catalog, o, MPI_COMM_WORLD);
+  std::vector<std::string> settings = {"MoL::final_time=0", "HandOff::buffer_zones=2", "Analysis::every=1",
+                                       "Flesh::out_dir=" + out.string()};
+  settings.insert(settings.end(), overrides.begin(), overrides.end());
+  Simulation sim(handoff_test::compiled_catalog(), handoff_test::handoff_options(data, settings), MPI_COMM_WORLD);
   sim.setup_output_and_grid();
   sim.run();
   Result r;
@@ -158,9 +129,9 @@ void check(const TovCarpet& data, const Result& r, const char* name, double rho_
   EXPECT_GE(lines[1], 12);
 }
 
-std::string error_of(const TovCarpet& data, std::vector<std::string> overrides) {
+std::string error_of(const TovCarpet& data, const std::vector<std::string>& overrides) {
   try {
-    hand_off(data, std::move(overrides));
+    hand_off(data, overrides);
   } catch (const std::exception& e) {
     return e.what();
   }
