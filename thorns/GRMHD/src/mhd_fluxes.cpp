@@ -14,6 +14,7 @@
 #include "HydroBase/magnetic_field.hpp"
 #include "face_kernel_mhd.hpp"
 #include "line_scratch.hpp"
+#include "line_sweep.hpp"
 #include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd {
@@ -65,40 +66,32 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
                          MhdLineScratch& L) {
   const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
-  Field prim[Prim::ncomp], met[Metric::ncomp], fout[kNumCons], ct[kNumCt], bvec[3];
-  for (int c = 0; c < Prim::ncomp; ++c) prim[c] = b.field(g.prim, c);
-  for (int c = 0; c < Metric::ncomp; ++c) met[c] = b.field(g.metric, c);
-  for (int c = 0; c < kNumCons; ++c) fout[c] = b.field(g.flux[D], c);
+  const SweepFields<D> fields(b, g);
+  Field ct[kNumCt], bvec[3];
   for (int c = 0; c < kNumCt; ++c) ct[c] = b.field(mg.ct[D], c);
   for (int c = 0; c < 3; ++c) bvec[c] = b.field(mg.bvec, c);
   const Field bn = b.field(mg.bface[D], 0);
-  const std::ptrdiff_t stride = D == 0 ? 1 : D == 1 ? prim[0].sj : prim[0].sk;
-  const std::ptrdiff_t fstride = D == 0 ? 1 : D == 1 ? fout[0].sj : fout[0].sk;
   // The transverse directions in cyclic order: the induction fluxes of B^{next}, B^{prev}.
   constexpr int next = (D + 1) % 3, prev = (D + 2) % 3;
-  constexpr int a = D == 0 ? 1 : 0, c2 = D == 2 ? 1 : 2;
+  constexpr int a = SweepFields<D>::first_transverse, c2 = SweepFields<D>::second_transverse;
   const int lo_a = direction_used(b, a) ? -1 : 0, hi_a = b.n[a] + (direction_used(b, a) ? 1 : 0);
   const int lo_c = direction_used(b, c2) ? -1 : 0, hi_c = b.n[c2] + (direction_used(b, c2) ? 1 : 0);
   const CoordinateSystem cs = b.coordinates;
   const bool cartesian = cs == CoordinateSystem::cartesian;
   const PolarTrig trig(b);
-  const LineSources src = LineSources::of<E>(prim, met);
+  const LineSources src = LineSources::of<E>(fields.prim, fields.met);
   const double* const transverse_field[2] = {bvec[next].origin, bvec[prev].origin};
   double* out[kNumFluxMhd];
-  for (int c = 0; c < kNumCons; ++c) out[c] = fout[c].origin;
+  for (int c = 0; c < kNumCons; ++c) out[c] = fields.flux[c].origin;
   for (int c = 0; c < kNumCt; ++c) out[kNumCons + c] = ct[c].origin;
   if (cartesian)
     for (int f = 0; f <= n; ++f) L.work[kWorkInvNext][f] = L.work[kWorkInvPrev][f] = 1.0;
 
   for (int ic = lo_c; ic < hi_c; ++ic)
     for (int ia = lo_a; ia < hi_a; ++ia) {
-      int idx[3];
-      idx[D] = 0;
-      idx[a] = ia;
-      idx[c2] = ic;
-      const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
-      const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
-      gather_line<E>(src, transverse_field, base, stride, n, ng, L);
+      const std::array<int, 3> idx = SweepFields<D>::line_start(ia, ic);
+      const std::ptrdiff_t base = fields.cell_offset(idx), fbase = fields.face_offset(idx);
+      gather_line<E>(src, transverse_field, base, fields.stride, n, ng, L);
       // Curvilinear: reconstruct the orthonormal components sqrt(f_bb) B^b, smooth through the
       // axis and the origin, not the coordinate components (B^theta ~ 1/r, B^phi ~ 1/R there).
       if (!cartesian) {
@@ -110,10 +103,7 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.cell[kRecBPrev][m] *= h[prev];
         }
       }
-      for (int q = 0; q < kNumRecMhd; ++q)
-        if (reconstructed_slot<E>(q)) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
-      if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
-      else set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, stride, L);
+      reconstruct_line<D, E>(s, b, trig, idx, n, src, base, fields.stride, L);
 
       Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
       // The face field is the sqrt(f)-weighted face mean of B^d; the face states need the point value
@@ -123,12 +113,12 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
       double normal_factor = 1.0;
       if (!cartesian) {
         const double h = scale_factors(cs, x, trig.sin_centre(idx[1]))[D];
-        if (h != 0) normal_factor = hydrobase::orthonormal_factor(b, D, idx) / h;
+        if (h != 0) normal_factor = hydrobase::orthonormal_factor(b, D, idx.data()) / h;
       }
       const std::array<double, 3> flux_weight =
-          cartesian ? std::array<double, 3>{1.0, 1.0, 1.0} : momentum_flux_weights(b, D, idx, x);
+          cartesian ? std::array<double, 3>{1.0, 1.0, 1.0} : momentum_flux_weights(b, D, idx.data(), x);
       const double* pbn = bn.origin + fbase;
-      for (int f = 0; f <= n; ++f) L.work[kWorkBNormal][f] = pbn[f * fstride] * normal_factor / L.face.psi6[f];
+      for (int f = 0; f <= n; ++f) L.work[kWorkBNormal][f] = pbn[f * fields.flux_stride] * normal_factor / L.face.psi6[f];
       if (!cartesian)
         for (int f = 0; f <= n; ++f) {
           // Back to coordinate components; on a face on the axis or at the origin (zero factor) the
@@ -139,8 +129,7 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.work[kWorkInvPrev][f] = h[prev] != 0 ? 1.0 / h[prev] : 0.0;
         }
       // Straight into the flux and ct groups (strided across x).
-      if constexpr (D == 0) mhd_face_fluxes<D>(eos, n, flux_weight, L, face_output<kNumFluxMhd>(out, fbase, UnitStride{}));
-      else mhd_face_fluxes<D>(eos, n, flux_weight, L, face_output<kNumFluxMhd>(out, fbase, fstride));
+      mhd_face_fluxes<D>(eos, n, flux_weight, L, line_face_output<D, kNumFluxMhd>(out, fbase, fields.flux_stride));
     }
 }
 

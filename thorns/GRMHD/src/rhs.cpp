@@ -17,6 +17,7 @@
 #include "centroid_derivative.hpp"
 #include "face_kernel.hpp"
 #include "line_scratch.hpp"
+#include "line_sweep.hpp"
 #include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd {
@@ -28,35 +29,19 @@ template <int D, class E>
 void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, HydroLineScratch& L) {
   const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
-  Field prim[Prim::ncomp], met[Metric::ncomp], fout[kNumCons];
-  for (int c = 0; c < Prim::ncomp; ++c) prim[c] = b.field(g.prim, c);
-  for (int c = 0; c < Metric::ncomp; ++c) met[c] = b.field(g.metric, c);
-  for (int c = 0; c < kNumCons; ++c) fout[c] = b.field(g.flux[D], c);
-  const LineSources src = LineSources::of<E>(prim, met);
+  const SweepFields<D> fields(b, g);
+  const LineSources src = LineSources::of<E>(fields.prim, fields.met);
   double* out[kNumCons];
-  for (int c = 0; c < kNumCons; ++c) out[c] = fout[c].origin;
-  const std::ptrdiff_t stride = D == 0 ? 1 : D == 1 ? prim[0].sj : prim[0].sk;
-  const std::ptrdiff_t fstride = D == 0 ? 1 : D == 1 ? fout[0].sj : fout[0].sk;
-  // The two transverse directions.
-  constexpr int a = D == 0 ? 1 : 0, c2 = D == 2 ? 1 : 2;
+  for (int c = 0; c < kNumCons; ++c) out[c] = fields.flux[c].origin;
   const PolarTrig trig(b);
 
-  for (int ic = 0; ic < b.n[c2]; ++ic)
-    for (int ia = 0; ia < b.n[a]; ++ia) {
-      int idx[3];
-      idx[D] = 0;
-      idx[a] = ia;
-      idx[c2] = ic;
-      const std::ptrdiff_t base = idx[0] + idx[1] * prim[0].sj + idx[2] * prim[0].sk;
-      const std::ptrdiff_t fbase = idx[0] + idx[1] * fout[0].sj + idx[2] * fout[0].sk;
-      gather_line<E>(src, nullptr, base, stride, n, ng, L);
-      for (int q = 0; q < kNumRecHydro; ++q)
-        if (reconstructed_slot<E>(q)) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
-      if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
-      else set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, stride, L);
-      // Straight into the flux groups (strided across x).
-      if constexpr (D == 0) hydro_face_fluxes<D>(eos, n, L, face_output<kNumCons>(out, fbase, UnitStride{}));
-      else hydro_face_fluxes<D>(eos, n, L, face_output<kNumCons>(out, fbase, fstride));
+  for (int ic = 0; ic < b.n[SweepFields<D>::second_transverse]; ++ic)
+    for (int ia = 0; ia < b.n[SweepFields<D>::first_transverse]; ++ia) {
+      const std::array<int, 3> idx = SweepFields<D>::line_start(ia, ic);
+      const std::ptrdiff_t base = fields.cell_offset(idx), fbase = fields.face_offset(idx);
+      gather_line<E>(src, nullptr, base, fields.stride, n, ng, L);
+      reconstruct_line<D, E>(s, b, trig, idx, n, src, base, fields.stride, L);
+      hydro_face_fluxes<D>(eos, n, L, line_face_output<D, kNumCons>(out, fbase, fields.flux_stride));
     }
 }
 
