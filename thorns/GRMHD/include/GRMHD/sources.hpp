@@ -29,6 +29,32 @@ struct MetricDerivatives {
   std::array<std::array<double, 3>, 3> dbeta{};  // dbeta[i][k] = d_i beta^k
 };
 
+// nabla_i beta^j = d_i beta^j + Gamma^j_ik beta^k (nabla of the flat metric f; gamma = nullptr:
+// Cartesian, no Christoffels), for the extrinsic-curvature term of s(tau).
+inline std::array<std::array<double, 3>, 3> shift_gradient(const MetricDerivatives& dm, const Christoffels* gamma,
+                                                           const std::array<double, 3>& beta) {
+  std::array<std::array<double, 3>, 3> nb;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      double c = dm.dbeta[i][j];
+      if (gamma)
+        for (int k = 0; k < 3; ++k) c += (*gamma)[j][i][k] * beta[k];
+      nb[i][j] = c;
+    }
+  return nb;
+}
+
+// s(S_i) less its shift term: -E d_i alpha + (2 alpha S^j_j / psi) d_i psi + k sum_j diag_j d_i f_jj,
+// k diag_j the (alpha/2) psi^4 S^jj of the stress (hydro: k = (alpha/2) psi^4 rho h W^2, diag_j = (v^j)^2).
+inline double momentum_source_without_shift(int i, double E, double two_a_trace_over_psi, double k, const double* diag,
+                                            const MetricDerivatives& dm, const std::array<std::array<double, 3>, 3>& df) {
+  return -E * dm.dalpha[i] + two_a_trace_over_psi * dm.dpsi[i] + k * (diag[0] * df[i][0] + diag[1] * df[i][1] + diag[2] * df[i][2]);
+}
+// w_k d_i beta^k (the shift term of s(S_i) is S_k d_i beta^k).
+inline double shift_contraction(int i, const double* w, const MetricDerivatives& dm) {
+  return w[0] * dm.dbeta[i][0] + w[1] * dm.dbeta[i][1] + w[2] * dm.dbeta[i][2];
+}
+
 // s[kD] and s[kDYe] are zero; `df[i][j]` = d_i f_jj; `with_shift` skips the shift terms when beta = 0.
 inline void gravity_sources(const FluidState& s, const PointMetric& m, double psi, const MetricDerivatives& dm,
                             const std::array<std::array<double, 3>, 3>& df, const Christoffels* gamma,
@@ -43,23 +69,13 @@ inline void gravity_sources(const FluidState& s, const PointMetric& m, double ps
   src[kDYe] = 0;
   double tau = 0;
   for (int i = 0; i < 3; ++i) {
-    double si = -E * dm.dalpha[i] + two_a_trace_over_psi * dm.dpsi[i] +
-                half_a_psi4_z * (vv[0] * df[i][0] + vv[1] * df[i][1] + vv[2] * df[i][2]);
-    if (with_shift)
-      si += z * (s.v_dn[0] * dm.dbeta[i][0] + s.v_dn[1] * dm.dbeta[i][1] + s.v_dn[2] * dm.dbeta[i][2]);
+    double si = momentum_source_without_shift(i, E, two_a_trace_over_psi, half_a_psi4_z, vv, dm, df);
+    if (with_shift) si += z * shift_contraction(i, s.v_dn.data(), dm);
     src[kS1 + i] = si;
     tau -= z * s.v[i] * dm.dalpha[i];
   }
   if (with_shift) {
-    // nabla_i beta^j = d_i beta^j + Gamma^j_ik beta^k
-    double nb[3][3];
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        double c = dm.dbeta[i][j];
-        if (gamma)
-          for (int k = 0; k < 3; ++k) c += (*gamma)[j][i][k] * m.beta[k];
-        nb[i][j] = c;
-      }
+    const auto nb = shift_gradient(dm, gamma, m.beta);
     double vvk = 0;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) vvk += s.v[i] * s.v_dn[j] * nb[i][j];

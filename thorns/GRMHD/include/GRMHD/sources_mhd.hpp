@@ -50,21 +50,13 @@ inline void gravity_sources_mhd(const FluidState& s, const MagneticState& g, con
   src[kDYe] = 0;
   double tau = 0;
   for (int i = 0; i < 3; ++i) {
-    double si = -E * dm.dalpha[i] + two_a_trace_over_psi * dm.dpsi[i] +
-                half_a_psi4 * (diag[0] * df[i][0] + diag[1] * df[i][1] + diag[2] * df[i][2]);
-    if (with_shift) si += S_dn[0] * dm.dbeta[i][0] + S_dn[1] * dm.dbeta[i][1] + S_dn[2] * dm.dbeta[i][2];
+    double si = momentum_source_without_shift(i, E, two_a_trace_over_psi, half_a_psi4, diag, dm, df);
+    if (with_shift) si += shift_contraction(i, S_dn, dm);
     src[kS1 + i] = si;
     tau -= S_up[i] * dm.dalpha[i];
   }
   if (with_shift) {
-    double nb[3][3];  // nabla_i beta^j
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        double c = dm.dbeta[i][j];
-        if (gamma)
-          for (int k = 0; k < 3; ++k) c += (*gamma)[j][i][k] * m.beta[k];
-        nb[i][j] = c;
-      }
+    const auto nb = shift_gradient(dm, gamma, m.beta);  // nabla_i beta^j
     double vvk = 0, bbk = 0;
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
