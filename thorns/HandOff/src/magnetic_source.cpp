@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "point_metric.hpp"
 #include "remnant/error.hpp"
 
 namespace remnant::handoff {
@@ -9,15 +10,11 @@ namespace remnant::handoff {
 bool has_magnetic_field(const SourceData& src) { return src.has("Bvec[0]") && src.has("Bvec[1]") && src.has("Bvec[2]"); }
 
 void add_magnetic_source(SourceData& src) {
-  static const char* g_names[6] = {"gxx", "gxy", "gxz", "gyy", "gyz", "gzz"};
-  bool metric = true;
-  for (const char* g : g_names) metric = metric && src.has(g);
+  const bool metric = has_metric_fields(src);
   for (auto& L : src.levels) {
     const std::size_t n = L.size();
     const double* B[3] = {L.fields.at("Bvec[0]").data(), L.fields.at("Bvec[1]").data(), L.fields.at("Bvec[2]").data()};
-    const double* g[6] = {};
-    if (metric)
-      for (int a = 0; a < 6; ++a) g[a] = L.fields.at(g_names[a]).data();
+    const LevelMetric g(L, metric);
     std::vector<double>* Bt[3];
     for (int a = 0; a < 3; ++a) (Bt[a] = &L.fields[densitised_field_names()[static_cast<std::size_t>(a)]])->assign(n, 0.0);
     auto& emag = L.fields["Emag"];
@@ -28,13 +25,7 @@ void add_magnetic_source(SourceData& src) {
         for (int i = 0; i < L.n[0]; ++i) {
           const std::size_t q = L.index(i, j, k);
           if (!L.valid[q]) continue;
-          double m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-          if (metric) {
-            m[0][0] = g[0][q], m[0][1] = m[1][0] = g[1][q], m[0][2] = m[2][0] = g[2][q];
-            m[1][1] = g[3][q], m[1][2] = m[2][1] = g[4][q], m[2][2] = g[5][q];
-          }
-          const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                             m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+          const auto [m, det] = metric_at(g, q);
           if (!(det > 0)) continue;  // add_conserved has refused such a metric already
           const double sg = std::sqrt(det);
           double B2 = 0;

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <string>
 
+#include "magnetic_source.hpp"
+#include "point_metric.hpp"
 #include "remnant/error.hpp"
 #include "remnant/parameters.hpp"
 
@@ -108,13 +110,11 @@ std::vector<std::string> complete_source(SourceData& src, const eos::EOS& eos, c
 
 std::vector<std::string> add_conserved(SourceData& src) {
   std::vector<std::string> notes;
-  static const char* g_names[6] = {"gxx", "gxy", "gxz", "gyy", "gyz", "gzz"};
-  bool metric = true;
-  for (const char* g : g_names) metric = metric && src.has(g);
+  const bool metric = has_metric_fields(src);
   if (!metric) notes.push_back("no ADMBase::gxx..gzz in the data: a flat 3-metric densitises the conserved variables");
   if (!src.has("alp")) notes.push_back("no ADMBase::alp in the data: the lapse is not compared");
   const bool have_cons = src.has("Dt"), have_lapse = src.has("alp");
-  const bool magnetic = src.has("Bvec[0]") && src.has("Bvec[1]") && src.has("Bvec[2]");
+  const bool magnetic = has_magnetic_field(src);
   for (auto& L : src.levels) {
     const std::size_t n = L.size();
     const auto& rho = L.fields.at("rho");
@@ -122,12 +122,10 @@ std::vector<std::string> add_conserved(SourceData& src) {
     const auto& press = L.fields.at("press");
     const auto& ye = L.fields.at("Ye");
     const double* v[3] = {L.fields.at("vel[0]").data(), L.fields.at("vel[1]").data(), L.fields.at("vel[2]").data()};
-    const double* g[6] = {};
+    const LevelMetric g(L, metric);
     const double* B[3] = {};
     if (magnetic)
       for (int a = 0; a < 3; ++a) B[a] = L.fields.at("Bvec[" + std::to_string(a) + "]").data();
-    if (metric)
-      for (int a = 0; a < 6; ++a) g[a] = L.fields.at(g_names[a]).data();
     auto& gamma13 = L.fields["gamma13"];
     gamma13.assign(n, 1.0);
     if (!have_lapse) L.fields["alp"].assign(n, 1.0);
@@ -139,13 +137,7 @@ std::vector<std::string> add_conserved(SourceData& src) {
       }
     for (std::size_t q = 0; q < n; ++q) {
       if (!L.valid[q]) continue;
-      double m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-      if (metric) {
-        m[0][0] = g[0][q], m[0][1] = m[1][0] = g[1][q], m[0][2] = m[2][0] = g[2][q];
-        m[1][1] = g[3][q], m[1][2] = m[2][1] = g[4][q], m[2][2] = g[5][q];
-      }
-      const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-                         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+      const auto [m, det] = metric_at(g, q);
       if (!(det > 0)) throw RunError("HandOff: the 3-metric (ADMBase::gxx..gzz) is not positive definite at " + where(L, q));
       gamma13[q] = std::cbrt(det);
       if (have_cons) continue;
