@@ -6,6 +6,7 @@
 #include "EOS/eos.hpp"
 #include "HydroBase/magnetic_field.hpp"
 #include "groups.hpp"
+#include "interior_faces.hpp"
 #include "remnant/cell_geometry.hpp"
 #include "remnant/error.hpp"
 
@@ -81,11 +82,9 @@ void alfven_wave_field(Context& ctx) {
     // x faces: B^1 = B0; y, z faces: the exact average over the cell's x extent (uniform in y, z).
     for (int a = 0; a < 3; ++a) {
       const Field f = b->field(g.bface[a], 0);
-      const bool used = direction_used(*b, a);
-      for (int k = 0; k < b->n[2] + (used && a == 2); ++k)
-        for (int j = 0; j < b->n[1] + (used && a == 1); ++j)
-          for (int i = 0; i < b->n[0] + (used && a == 0); ++i)
-            f(i, j, k) = a == 0 ? w.B0 : w.field_average(b->face_coordinate(0, i), b->face_coordinate(0, i + 1), 0.0)[a];
+      for_interior_faces(*b, a, [&](int i, int j, int k) {
+        f(i, j, k) = a == 0 ? w.B0 : w.field_average(b->face_coordinate(0, i), b->face_coordinate(0, i + 1), 0.0)[a];
+      });
     }
   }
 }

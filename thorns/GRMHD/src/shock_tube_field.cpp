@@ -6,6 +6,7 @@
 
 #include "HydroBase/magnetic_field.hpp"
 #include "HydroBase/vector_potential.hpp"
+#include "interior_faces.hpp"
 #include "remnant/cell_geometry.hpp"
 #include "remnant/error.hpp"
 
@@ -132,14 +133,11 @@ void shock_tube_field(Context& ctx) {
   for (Block* b : ctx.grid().local_blocks()) {
     for (int a = 0; a < 3; ++a) {
       const Field f = b->field(g.bface[a], 0);
-      const bool used = direction_used(*b, a);
-      for (int k = 0; k < b->n[2] + (used && a == 2); ++k)
-        for (int j = 0; j < b->n[1] + (used && a == 1); ++j)
-          for (int i = 0; i < b->n[0] + (used && a == 0); ++i) {
-            // x faces take the left value at and left of x0 (B^1 is equal anyway); the others their cell's.
-            const double x = a == 0 ? b->face_coordinate(0, i) : b->x(0, i);
-            f(i, j, k) = (x < x0 ? left : right)[static_cast<std::size_t>(a)];
-          }
+      for_interior_faces(*b, a, [&](int i, int j, int k) {
+        // x faces take the left value at and left of x0 (B^1 is equal anyway); the others their cell's.
+        const double x = a == 0 ? b->face_coordinate(0, i) : b->x(0, i);
+        f(i, j, k) = (x < x0 ? left : right)[static_cast<std::size_t>(a)];
+      });
     }
     if (a0 != 0) add_potential_field(A, g.bface, *b);
   }

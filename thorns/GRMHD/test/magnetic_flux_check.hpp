@@ -11,6 +11,7 @@
 #include <span>
 
 #include "constrained_transport.hpp"
+#include "interior_faces.hpp"
 #include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd::test {
@@ -34,19 +35,16 @@ inline FluxCheck check_magnetic_flux(const MhdGroups& g, std::span<Block* const>
   for (Block* b : blocks) {
     r.cell = std::max(r.cell, relative_divergence(g, *b));
     for (int a = 0; a < 3; ++a) {
-      const bool used = direction_used(*b, a);
       const Field f = b->field(g.bface[a], 0);
-      for (int k = 0; k < b->n[2] + (used && a == 2); ++k)
-        for (int j = 0; j < b->n[1] + (used && a == 1); ++j)
-          for (int i = 0; i < b->n[0] + (used && a == 0); ++i) {
-            Key key{a, b->level, b->index[0] * b->n[0] + i, b->index[1] * b->n[1] + j, b->index[2] * b->n[2] + k};
-            const long long wrap = periodic_cells[static_cast<std::size_t>(a)] << b->level;
-            if (wrap > 0 && key[2 + a] == wrap) key[2 + a] = 0;
-            const double phi = b->face_area(a, i, j, k) * f(i, j, k);
-            scale = std::max(scale, std::abs(phi));
-            auto [it, fresh] = flux.emplace(key, phi);
-            if (!fresh) r.shared = std::max(r.shared, std::abs(it->second - phi));
-          }
+      for_interior_faces(*b, a, [&](int i, int j, int k) {
+        Key key{a, b->level, b->index[0] * b->n[0] + i, b->index[1] * b->n[1] + j, b->index[2] * b->n[2] + k};
+        const long long wrap = periodic_cells[static_cast<std::size_t>(a)] << b->level;
+        if (wrap > 0 && key[2 + a] == wrap) key[2 + a] = 0;
+        const double phi = b->face_area(a, i, j, k) * f(i, j, k);
+        scale = std::max(scale, std::abs(phi));
+        auto [it, fresh] = flux.emplace(key, phi);
+        if (!fresh) r.shared = std::max(r.shared, std::abs(it->second - phi));
+      });
     }
   }
   for (const auto& [key, phi] : flux) {
