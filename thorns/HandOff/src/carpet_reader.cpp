@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -97,10 +98,10 @@ bool ghost_points_written(const std::string& dump, const std::string& path) {
 
 // Carpet's `active` attribute, a bboxset written as text ("bboxset<CCTK_INT4,3>(set<bbox>:{([lo]:
 // [hi]:[stride]/...),...},...)", indices in units of the finest level's spacing), as inclusive
-// boxes of component-local indices (the level index less iorigin); false when not of that form.
-bool parse_active(const std::string& text, const std::vector<long long>& iorigin, std::vector<std::array<int, 6>>& boxes) {
-  boxes.clear();
-  if (text.find("set<bbox>:{}") != std::string::npos) return true;  // the component owns no point
+// boxes of component-local indices (the level index less iorigin); none when not of that form.
+std::optional<std::vector<std::array<int, 6>>> parse_active(const std::string& text, const std::vector<long long>& iorigin) {
+  std::vector<std::array<int, 6>> boxes;
+  if (text.find("set<bbox>:{}") != std::string::npos) return boxes;  // the component owns no point
   std::size_t pos = 0;
   while ((pos = text.find("([", pos)) != std::string::npos) {
     long long v[9];
@@ -111,18 +112,19 @@ bool parse_active(const std::string& text, const std::vector<long long>& iorigin
       ok = static_cast<bool>(in >> v[q] >> sep[q]);
       if (ok && q % 3 == 2 && q < 8) ok = in.get() == ':' && in.get() == '[';  // "]:[" between vectors
     }
-    if (!ok) return false;
+    if (!ok) return std::nullopt;
     std::array<int, 6> b{};
     for (std::size_t a = 0; a < 3; ++a) {
       const long long stride = v[6 + a];
-      if (stride <= 0 || v[a] % stride != 0 || v[3 + a] % stride != 0) return false;
+      if (stride <= 0 || v[a] % stride != 0 || v[3 + a] % stride != 0) return std::nullopt;
       b[a] = static_cast<int>(v[a] / stride - iorigin[a]);
       b[3 + a] = static_cast<int>(v[3 + a] / stride - iorigin[a]);
     }
     boxes.push_back(b);
     pos += 2;
   }
-  return !boxes.empty();
+  if (boxes.empty()) return std::nullopt;
+  return boxes;
 }
 
 std::string join_levels(const std::set<int>& s) {
@@ -321,8 +323,8 @@ SourceData read_carpet(const CarpetOptions& opt) {
       }
       if (h5::has_attr(d, "active") && h5::has_attr(d, "iorigin")) {
         const auto io = h5::attr_ints(d, "iorigin", r.file, r.name);
-        comp.has_active = io.size() == 3 && parse_active(h5::attr_string(d, "active", r.file, r.name), io, comp.active);
-        out.active_regions = out.active_regions || comp.has_active;
+        if (io.size() == 3) comp.active = parse_active(h5::attr_string(d, "active", r.file, r.name), io);
+        out.active_regions = out.active_regions || comp.active.has_value();
       }
       comp.where = r.file + ": " + r.name;
       builder.add(v, std::move(comp), std::move(data));

@@ -141,12 +141,13 @@ std::vector<SourceLevel> LevelBuilder::build() const {
           };
           // A lower face reaching below a reflection plane: its symmetry ghosts go by position.
           const bool symmetry_face = reflection_[a] && p.c.origin[a] < -kLatticeTolerance * L.delta[a];
-          first[a] = symmetry_face || p.c.has_active ? 0 : strip(0, at_lower);
-          last[a] = p.c.n[a] - 1 - (p.c.has_active ? 0 : strip(1, at_upper));
+          const bool active_region = p.c.active.has_value();  // Carpet's `active` boxes decide
+          first[a] = symmetry_face || active_region ? 0 : strip(0, at_lower);
+          last[a] = p.c.n[a] - 1 - (active_region ? 0 : strip(1, at_upper));
         }
         auto owned = [&p](const std::array<int, 3>& m) {
-          if (!p.c.has_active) return true;
-          for (const auto& b : p.c.active)
+          if (!p.c.active) return true;
+          for (const auto& b : *p.c.active)
             if (m[0] >= b[0] && m[1] >= b[1] && m[2] >= b[2] && m[0] <= b[3] && m[1] <= b[4] && m[2] <= b[5]) return true;
           return false;
         };

@@ -4,6 +4,7 @@
 // mask that holds where every variable has data of that level.
 #include <array>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,7 @@ struct Component {
   // Carpet's `active` attribute: the component's own points (owned, less outer and symmetry
   // boundaries and buffer zones), as inclusive component-local index boxes [lo x, y, z, hi x, y, z].
   // When present it replaces the ghost and buffer rules (no box: the component owns no point).
-  bool has_active = false;
-  std::vector<std::array<int, 6>> active;
+  std::optional<std::vector<std::array<int, 6>>> active;
 };
 
 class LevelBuilder {
