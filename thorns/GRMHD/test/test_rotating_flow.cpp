@@ -18,7 +18,7 @@
 
 #include "groups.hpp"
 #include "remnant/driver.hpp"
-#include "remnant/registrar.hpp"
+#include "remnant/forwarding_registrar.hpp"
 
 std::span<const remnant::ThornEntry> remnant_compiled_thorns();
 
@@ -61,27 +61,12 @@ void rotating_flow_initial_data(Context& ctx) {
 }
 
 // GRMHD's registration with GRMHD_ShockTube replaced by the rotating flow; everything else forwarded.
-class ReplaceInitialData : public ThornRegistrar {
+class ReplaceInitialData : public ForwardingRegistrar {
  public:
-  explicit ReplaceInitialData(ThornRegistrar& r) : r_(r) {}
+  using ForwardingRegistrar::ForwardingRegistrar;
   void function(const std::string& name, ScheduledFunction fn) override {
-    r_.function(name, name == "GRMHD_ShockTube" ? ScheduledFunction(rotating_flow_initial_data) : std::move(fn));
+    ForwardingRegistrar::function(name, name == "GRMHD_ShockTube" ? ScheduledFunction(rotating_flow_initial_data) : std::move(fn));
   }
-  void predicate(const std::string& name, Predicate fn) override { r_.predicate(name, std::move(fn)); }
-  void inverse_dt_limit(std::function<double(Context&)> fn) override { r_.inverse_dt_limit(std::move(fn)); }
-  void termination_check(std::function<std::string(Context&)> fn) override { r_.termination_check(std::move(fn)); }
-  void progress_fraction(std::function<double(Context&)> fn) override { r_.progress_fraction(std::move(fn)); }
-  void recovery(std::function<bool(Context&)> fn) override { r_.recovery(std::move(fn)); }
-  void persistent_state(std::function<std::string(Context&)> save,
-                        std::function<void(Context&, const std::string&)> restore) override {
-    r_.persistent_state(std::move(save), std::move(restore));
-  }
-  void grid_factory(std::function<std::unique_ptr<GridDriver>(const GridSetup&)> fn) override {
-    r_.grid_factory(std::move(fn));
-  }
-
- private:
-  ThornRegistrar& r_;
 };
 
 void (*grmhd_register)(ThornRegistrar&) = nullptr;

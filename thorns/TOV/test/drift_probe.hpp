@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "remnant/driver.hpp"
-#include "remnant/registrar.hpp"
+#include "remnant/forwarding_registrar.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
 
@@ -74,31 +74,16 @@ inline void measure_drift(Context& ctx) {
 }
 
 // Forwards a thorn's registration, with Analysis_Star followed by measure_drift.
-class WithDriftProbe : public ThornRegistrar {
+class WithDriftProbe : public ForwardingRegistrar {
  public:
-  explicit WithDriftProbe(ThornRegistrar& r) : r_(r) {}
+  using ForwardingRegistrar::ForwardingRegistrar;
   void function(const std::string& name, ScheduledFunction fn) override {
-    if (name != "Analysis_Star") return r_.function(name, std::move(fn));
-    r_.function(name, [fn = std::move(fn)](Context& ctx) {
+    if (name != "Analysis_Star") return ForwardingRegistrar::function(name, std::move(fn));
+    ForwardingRegistrar::function(name, [fn = std::move(fn)](Context& ctx) {
       fn(ctx);
       measure_drift(ctx);
     });
   }
-  void predicate(const std::string& name, Predicate fn) override { r_.predicate(name, std::move(fn)); }
-  void inverse_dt_limit(std::function<double(Context&)> fn) override { r_.inverse_dt_limit(std::move(fn)); }
-  void termination_check(std::function<std::string(Context&)> fn) override { r_.termination_check(std::move(fn)); }
-  void progress_fraction(std::function<double(Context&)> fn) override { r_.progress_fraction(std::move(fn)); }
-  void recovery(std::function<bool(Context&)> fn) override { r_.recovery(std::move(fn)); }
-  void persistent_state(std::function<std::string(Context&)> save,
-                        std::function<void(Context&, const std::string&)> restore) override {
-    r_.persistent_state(std::move(save), std::move(restore));
-  }
-  void grid_factory(std::function<std::unique_ptr<GridDriver>(const GridSetup&)> fn) override {
-    r_.grid_factory(std::move(fn));
-  }
-
- private:
-  ThornRegistrar& r_;
 };
 
 inline void (*analysis_register)(ThornRegistrar&) = nullptr;
