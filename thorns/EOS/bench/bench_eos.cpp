@@ -44,7 +44,9 @@ std::vector<Point> points(const Tabulated<>& eos, std::size_t n) {
   return v;
 }
 
-void BM_Thermo(benchmark::State& state) {
+// One EOS call per iteration, eval(eos, point), over the random states of table state.range(0).
+template <class Eval>
+void bench_pointwise(benchmark::State& state, Eval eval) {
   auto t = table(int(state.range(0)));
   if (!t) return state.SkipWithError("table not found");
   Tabulated<> eos(t);
@@ -52,25 +54,19 @@ void BM_Thermo(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const Point& p = pts[i++ & 4095];
-    benchmark::DoNotOptimize(eos.thermo(p.rho, p.T, p.ye));
+    benchmark::DoNotOptimize(eval(eos, p));
   }
   state.SetItemsProcessed(state.iterations());
   state.SetLabel(kTables[state.range(0)]);
 }
+
+void BM_Thermo(benchmark::State& state) {
+  bench_pointwise(state, [](const Tabulated<>& eos, const Point& p) { return eos.thermo(p.rho, p.T, p.ye); });
+}
 BENCHMARK(BM_Thermo)->Arg(0)->Arg(1);
 
 void BM_Press(benchmark::State& state) {
-  auto t = table(int(state.range(0)));
-  if (!t) return state.SkipWithError("table not found");
-  Tabulated<> eos(t);
-  const auto pts = points(eos, 4096);
-  std::size_t i = 0;
-  for (auto _ : state) {
-    const Point& p = pts[i++ & 4095];
-    benchmark::DoNotOptimize(eos.press(p.rho, p.T, p.ye));
-  }
-  state.SetItemsProcessed(state.iterations());
-  state.SetLabel(kTables[state.range(0)]);
+  bench_pointwise(state, [](const Tabulated<>& eos, const Point& p) { return eos.press(p.rho, p.T, p.ye); });
 }
 BENCHMARK(BM_Press)->Arg(0)->Arg(1);
 
