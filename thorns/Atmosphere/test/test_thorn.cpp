@@ -24,27 +24,12 @@ remnant::ThornSpec spec() { return remnant::test::thorn_spec_from_source(REMNANT
 }  // namespace
 
 TEST(AtmosphereThorn, ThornYamlParsesAndRunsAfterEosStartup) {
-  const remnant::ThornSpec t = spec();
-  EXPECT_EQ(t.name, "Atmosphere");
-  ASSERT_EQ(t.provides.size(), 1u);
-  EXPECT_EQ(t.provides[0], "atmosphere");
-  ASSERT_EQ(t.schedule.size(), 1u);
-  EXPECT_EQ(t.schedule[0].name, "Atmosphere_Startup");
-  EXPECT_EQ(t.schedule[0].in, "startup");
-  ASSERT_EQ(t.schedule[0].after.size(), 1u);
-  EXPECT_EQ(t.schedule[0].after[0].name, "EOS_Startup");
-  remnant::test::RecordingRegistrar r;
-  remnant_register_thorn_Atmosphere(r);
-  EXPECT_EQ(r.fns.count("Atmosphere_Startup"), 1u);
+  remnant::test::expect_startup_provider(spec(), "Atmosphere", "atmosphere", "EOS_Startup", remnant_register_thorn_Atmosphere);
 }
 
 TEST(AtmosphereThorn, StartupPublishesTheAtmosphere) {
-  remnant::Parameters params;
-  for (auto p : spec().parameters) params.declare(p);
-  remnant::VariableRegistry vars;
-  remnant::Context ctx(params, vars, MPI_COMM_WORLD);
-  remnant::test::RecordingRegistrar r;
-  remnant_register_thorn_Atmosphere(r);
+  remnant::test::ThornContext thorn(spec(), remnant_register_thorn_Atmosphere);
+  auto& [params, vars, ctx, r] = thorn;
   EXPECT_THROW(r.fns.at("Atmosphere_Startup")(ctx), remnant::RunError);  // no EOS service yet
 
   ctx.publish("eos", std::make_shared<remnant::eos::EOS>(remnant::eos::IdealGas<>(2.0)));

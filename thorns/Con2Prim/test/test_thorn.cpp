@@ -23,28 +23,13 @@ remnant::ThornSpec spec() { return remnant::test::thorn_spec_from_source(REMNANT
 }  // namespace
 
 TEST(Con2PrimThorn, ThornYamlParsesAndDeclaresStartup) {
-  const remnant::ThornSpec t = spec();
-  EXPECT_EQ(t.name, "Con2Prim");
-  ASSERT_EQ(t.provides.size(), 1u);
-  EXPECT_EQ(t.provides[0], "con2prim");
-  ASSERT_EQ(t.schedule.size(), 1u);
-  EXPECT_EQ(t.schedule[0].name, "Con2Prim_Startup");
-  EXPECT_EQ(t.schedule[0].in, "startup");
-  ASSERT_EQ(t.schedule[0].after.size(), 1u);
-  EXPECT_EQ(t.schedule[0].after[0].name, "Atmosphere_Startup");
-  remnant::test::RecordingRegistrar r;
-  remnant_register_thorn_Con2Prim(r);
-  EXPECT_EQ(r.fns.count("Con2Prim_Startup"), 1u);
+  remnant::test::expect_startup_provider(spec(), "Con2Prim", "con2prim", "Atmosphere_Startup", remnant_register_thorn_Con2Prim);
 }
 
 TEST(Con2PrimThorn, StartupPublishesTheSettings) {
   namespace c2p = remnant::con2prim;
-  remnant::Parameters params;
-  for (auto p : spec().parameters) params.declare(p);
-  remnant::VariableRegistry vars;
-  remnant::Context ctx(params, vars, MPI_COMM_WORLD);
-  remnant::test::RecordingRegistrar r;
-  remnant_register_thorn_Con2Prim(r);
+  remnant::test::ThornContext thorn(spec(), remnant_register_thorn_Con2Prim);
+  auto& [params, vars, ctx, r] = thorn;
 
   r.fns.at("Con2Prim_Startup")(ctx);
   const c2p::Settings& d = ctx.service<c2p::Settings>("con2prim");

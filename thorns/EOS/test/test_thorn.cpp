@@ -22,26 +22,14 @@ remnant::ThornSpec spec() { return remnant::test::thorn_spec_from_source(REMNANT
 }  // namespace
 
 TEST(EOSThorn, ThornYamlParsesAndDeclaresStartup) {
-  const remnant::ThornSpec t = spec();
-  EXPECT_EQ(t.name, "EOS");
-  ASSERT_EQ(t.provides.size(), 1u);
-  EXPECT_EQ(t.provides[0], "eos");
-  ASSERT_EQ(t.schedule.size(), 1u);
-  EXPECT_EQ(t.schedule[0].name, "EOS_Startup");
-  remnant::test::RecordingRegistrar r;
-  remnant_register_thorn_EOS(r);
-  EXPECT_EQ(r.fns.count("EOS_Startup"), 1u);
+  remnant::test::expect_startup_provider(spec(), "EOS", "eos", "", remnant_register_thorn_EOS);
 }
 
 TEST(EOSThorn, StartupPublishesTheEos) {
   const std::string table = eos_test::shared_eos("SFHo_reduced_39r_39t_20y_compose.h5");
   REQUIRE_TABLE(table);
-  remnant::Parameters params;
-  for (auto p : spec().parameters) params.declare(p);
-  remnant::VariableRegistry vars;
-  remnant::Context ctx(params, vars, MPI_COMM_WORLD);
-  remnant::test::RecordingRegistrar r;
-  remnant_register_thorn_EOS(r);
+  remnant::test::ThornContext thorn(spec(), remnant_register_thorn_EOS);
+  auto& [params, vars, ctx, r] = thorn;
 
   r.fns.at("EOS_Startup")(ctx);  // defaults: an ideal gas
   EXPECT_FALSE(ctx.service<remnant::eos::EOS>("eos").is_tabulated());
