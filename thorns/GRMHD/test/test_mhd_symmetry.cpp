@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 #include "mhd_run.hpp"
 #include "remnant/vars/HydroBase.hpp"
@@ -24,6 +25,28 @@ using namespace remnant::grmhd::test;
 
 // (a, global i, global j) -> face value; and the fluid's v^x, v^y by cell.
 using Faces = std::map<std::array<long long, 3>, double>;
+using FaceKey = std::array<long long, 3>;
+
+// The x and y face fields of the run's blocks under the keys key(b, a, i, j) gives (none: not
+// compared), and the largest |v^x|, |v^y| of its cells.
+template <class Key>
+Faces collect_faces(MhdRun& run, double& vmax, Key key) {
+  Faces f;
+  using Prim = remnant::vars::HydroBase::prim;
+  const int prim = run.group(Prim::full_name);
+  vmax = 0;
+  for (Block* b : run.blocks()) {
+    for (int a = 0; a < 2; ++a) {
+      const Field bf = b->field(run.group("HydroBase::Bface" + std::to_string(a + 1)), 0);
+      for (int j = 0; j < b->n[1] + (a == 1); ++j)
+        for (int i = 0; i < b->n[0] + (a == 0); ++i)
+          if (const std::optional<FaceKey> k = key(*b, a, i, j)) f[*k] = bf(i, j, 0);
+    }
+    const Prim p(*b, prim);
+    for_interior(*b, [&](int i, int j, int k) { vmax = std::max({vmax, std::abs(p.vel(0, i, j, k)), std::abs(p.vel(1, i, j, k))}); });
+  }
+  return f;
+}
 
 Faces run_faces(bool half, double& vmax) {
   const std::string grid = std::string("dimension: 2, ncells: [") + (half ? "16" : "32") +
@@ -36,24 +59,12 @@ Faces run_faces(bool half, double& vmax) {
                          "shock_left: [1.0, 0.0, 0.0, 0.0, 0.1], shock_right: [1.0, 0.0, 0.0, 0.0, 0.1], "
                          "field_potential_amplitude: 0.1",
                          "cfl: 0.4, final_time: 0.3"));
-  Faces f;
   const long long offset = half ? 16 : 0;  // global x index of x = 1/4 in the full run is 16
-  using Prim = remnant::vars::HydroBase::prim;
-  const int prim = run.group(Prim::full_name);
-  vmax = 0;
-  for (Block* b : run.blocks()) {
-    for (int a = 0; a < 2; ++a) {
-      const Field bf = b->field(run.group("HydroBase::Bface" + std::to_string(a + 1)), 0);
-      for (int j = 0; j < b->n[1] + (a == 1); ++j)
-        for (int i = 0; i < b->n[0] + (a == 0); ++i) {
-          const long long gi = b->index[0] * b->n[0] + i + offset, gj = b->index[1] * b->n[1] + j;
-          if (gi >= 16) f[{a, gi, gj}] = bf(i, j, 0);
-        }
-    }
-    const Prim p(*b, prim);
-    for_interior(*b, [&](int i, int j, int k) { vmax = std::max({vmax, std::abs(p.vel(0, i, j, k)), std::abs(p.vel(1, i, j, k))}); });
-  }
-  return f;
+  return collect_faces(run, vmax, [offset](const Block& b, int a, int i, int j) -> std::optional<FaceKey> {
+    const long long gi = b.index[0] * b.n[0] + i + offset, gj = b.index[1] * b.n[1] + j;
+    if (gi < 16) return std::nullopt;
+    return FaceKey{a, gi, gj};
+  });
 }
 
 // The x-y faces of the full square [-1/2, 1/2]^2 (32^2 cells) or of its quadrant [0, 1/2]^2 with
@@ -72,25 +83,13 @@ Faces run_square(bool quadrant, const std::string& axial, double& vmax, bool ref
                          "shock_left: [1.0, 0.0, 0.0, 0.0, 0.1], shock_right: [1.0, 0.0, 0.0, 0.0, 0.1], "
                          "field_potential_amplitude: 0.1",
                          "cfl: 0.4, final_time: 0.2"));
-  Faces f;
-  using Prim = remnant::vars::HydroBase::prim;
-  const int prim = run.group(Prim::full_name);
-  vmax = 0;
-  for (Block* b : run.blocks()) {
-    for (int a = 0; a < 2; ++a) {
-      const Field bf = b->field(run.group("HydroBase::Bface" + std::to_string(a + 1)), 0);
-      for (int j = 0; j < b->n[1] + (a == 1); ++j)
-        for (int i = 0; i < b->n[0] + (a == 0); ++i) {
-          // Keys: the full run's indices on the block's level (level 1: faces of the fine cells).
-          const long long offset = quadrant ? 16LL << b->level : 0, half = 16LL << b->level;
-          const long long gi = b->index[0] * b->n[0] + i + offset, gj = b->index[1] * b->n[1] + j + offset;
-          if (gi >= half && gj >= half) f[{a + 2 * b->level, gi, gj}] = bf(i, j, 0);
-        }
-    }
-    const Prim p(*b, prim);
-    for_interior(*b, [&](int i, int j, int k) { vmax = std::max({vmax, std::abs(p.vel(0, i, j, k)), std::abs(p.vel(1, i, j, k))}); });
-  }
-  return f;
+  return collect_faces(run, vmax, [quadrant](const Block& b, int a, int i, int j) -> std::optional<FaceKey> {
+    // Keys: the full run's indices on the block's level (level 1: faces of the fine cells).
+    const long long offset = quadrant ? 16LL << b.level : 0, half = 16LL << b.level;
+    const long long gi = b.index[0] * b.n[0] + i + offset, gj = b.index[1] * b.n[1] + j + offset;
+    if (gi < half || gj < half) return std::nullopt;
+    return FaceKey{a + 2 * b.level, gi, gj};
+  });
 }
 
 // Largest difference of the faces both hold, and the largest |value| of `part`.
