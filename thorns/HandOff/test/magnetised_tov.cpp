@@ -2,7 +2,6 @@
 #include "magnetised_tov.hpp"
 
 #include <mpi.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +15,6 @@
 #include "remnant/driver.hpp"
 #include "synthetic_carpet.hpp"
 
-std::span<const remnant::ThornEntry> remnant_compiled_thorns();
 
 namespace remnant::handoff::testing {
 
@@ -39,17 +37,20 @@ std::array<double, 3> MagnetisedTov::densitised(double x, double y, double z) co
   return {u[0] - g * x * z - t * y, u[1] - g * y * z + t * x, u[2] + 2 * kAb * p * p + g * (x * x + y * y)};
 }
 
-MagnetisedTov::MagnetisedTov(const MagnetisedTovOptions& o) : options(o) {
-  long pid = static_cast<long>(::getpid());
-  MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  // One folder per data set (several live at once in one process).
-  std::string name = "handoff_mag_" + std::to_string(pid) + (o.fine ? "_fine" : "") + (o.toroidal == 0 ? "_pol" : "") +
+namespace {
+
+// One folder per data set (several live at once in one process).
+std::string folder_of(const MagnetisedTovOptions& o) {
+  std::string name = std::string("handoff_mag") + (o.fine ? "_fine" : "") + (o.toroidal == 0 ? "_pol" : "") +
                      (o.octant_symmetric ? "_oct" : "") + (o.uniform != std::array<double, 3>{} ? "_uni" : "");
   for (int d = 0; d < 3; ++d)
     if (o.mirrors[static_cast<std::size_t>(d)]) name += "_m" + std::to_string(d);
-  dir = std::filesystem::temp_directory_path() / name;
-  if (rank == 0) std::filesystem::create_directories(dir);
+  return name;
+}
+
+}  // namespace
+
+MagnetisedTov::MagnetisedTov(const MagnetisedTovOptions& o) : TovCarpetData(folder_of(o)), options(o) {
   synthetic::SyntheticCarpet spec;
   spec.variables = {"HYDROBASE::rho", "HYDROBASE::press", "HYDROBASE::eps", "HYDROBASE::vel[0]", "HYDROBASE::vel[1]",
                     "HYDROBASE::vel[2]", "HYDROBASE::Bvec[0]", "HYDROBASE::Bvec[1]", "HYDROBASE::Bvec[2]", "ADMBASE::alp",
@@ -65,7 +66,7 @@ MagnetisedTov::MagnetisedTov(const MagnetisedTovOptions& o) : options(o) {
         l.nodes[d] -= below;
       }
   spec.iterations = {1024};
-  files = synthetic::write_synthetic_carpet(dir.string(), spec, [this](const std::string& v, int, double x, double y, double z) {
+  write(spec, [this](const std::string& v, int, double x, double y, double z) {
     const tov::TovPoint p = star.at(std::sqrt(x * x + y * y + z * z));
     const double psi6 = std::pow(p.psi, 6);
     for (int c = 0; c < 3; ++c)
@@ -76,13 +77,7 @@ MagnetisedTov::MagnetisedTov(const MagnetisedTovOptions& o) : options(o) {
     if (v == "ADMBASE::alp") return p.alpha;
     if (v == "ADMBASE::gxx" || v == "ADMBASE::gyy" || v == "ADMBASE::gzz") return std::pow(p.psi, 4);
     return 0.0;
-  }, rank == 0);
-  MPI_Barrier(MPI_COMM_WORLD);
-}
-
-MagnetisedTov::~MagnetisedTov() {
-  MPI_Barrier(MPI_COMM_WORLD);
-  if (rank == 0) std::filesystem::remove_all(dir);
+  });
 }
 
 // Gauss-Legendre in r (the field has a kink at p = p_cut) and theta, over the first quadrant of
@@ -146,17 +141,12 @@ std::string parfile_without_metric_solve() {
 
 Result hand_off(const MagnetisedTov& data, const std::vector<std::string>& overrides,
                 const std::function<void(Context&, Result&)>& inspect, const std::string* parfile_text) {
-  static const ThornCatalog catalog(remnant_compiled_thorns());
-  SimulationOptions o;
-  o.parfile_path = std::string(REMNANT_SOURCE_DIR) + "/parfiles/handoff_tov_cyl_2d.yaml";
+  SimulationOptions o = handoff_test::handoff_options(
+      data, {"HydroBase::magnetic_field=evolved", "MoL::final_time=0", "HandOff::buffer_zones=2", "Analysis::every=1",
+             "Flesh::out_dir=" + (data.dir / "out").string()});
   o.parfile_text = parfile_text;
-  o.quiet = true;
-  std::string files = "HandOff::files=[";
-  for (std::size_t i = 0; i < data.files.size(); ++i) files += (i ? "," : "") + data.files[i];
-  o.overrides = {files + "]", "HydroBase::magnetic_field=evolved", "MoL::final_time=0", "HandOff::buffer_zones=2",
-                 "Analysis::every=1", "Flesh::out_dir=" + (data.dir / "out").string()};
   o.overrides.insert(o.overrides.end(), overrides.begin(), overrides.end());
-  Simulation sim(catalog, o, MPI_COMM_WORLD);
+  Simulation sim(handoff_test::compiled_catalog(), o, MPI_COMM_WORLD);
   sim.setup_output_and_grid();
   sim.run();
   Result r;

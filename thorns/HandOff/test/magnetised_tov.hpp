@@ -18,6 +18,7 @@
 #include "Analysis/star_diagnostics.hpp"
 #include "HandOff/handoff_state.hpp"
 #include "TOV/tov_solver.hpp"
+#include "tov_carpet_data.hpp"
 
 namespace remnant {
 class Context;
@@ -35,21 +36,13 @@ struct MagnetisedTovOptions {
   std::array<double, 3> uniform{};         // a uniform densitised field added everywhere (net flux through the box)
 };
 
-struct MagnetisedTov {
-  std::unique_ptr<tov::ColdSlice> slice = tov::polytrope_slice(100.0, 2.0, 0.5);
-  tov::TovStar star{*slice, 1.28e-3};
+struct MagnetisedTov : handoff_test::TovCarpetData {
   double p_cut = kPcutFraction * star.at(0).press;
   MagnetisedTovOptions options;
-  std::filesystem::path dir;
-  std::vector<std::string> files;
-  int rank = 0;
 
   explicit MagnetisedTov(const MagnetisedTovOptions& o);
   explicit MagnetisedTov(double toroidal_amplitude = kAt, bool fine = false, bool bitant = false)
       : MagnetisedTov(MagnetisedTovOptions{toroidal_amplitude, fine, {false, false, bitant}, false}) {}
-  ~MagnetisedTov();
-  MagnetisedTov(const MagnetisedTov&) = delete;
-  MagnetisedTov& operator=(const MagnetisedTov&) = delete;
 
   double P(double r) const;
   double dP(double r) const;

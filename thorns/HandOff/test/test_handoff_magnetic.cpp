@@ -138,13 +138,10 @@ TEST(HandOffMagneticInput, BitantUnfoldedAsAxialVector) {
 // 2D grids import the field through the poloidal flux function from the axis.
 TEST(HandOffMagneticInput, GridWithoutAxisIsAnError) {
   const MagnetisedTov data;
-  std::string e;
-  try {
+  const std::string e = handoff_test::message_of([&] {
     hand_off(data, {"Grid::xmin=[1,0,0]", "Grid::ncells=[22,24,1]", "Grid::block_size=[11,8,1]",
                     "Grid::boundary_lower=[outflow,reflect,outflow]", "HandOff::max_outside_fraction=0.1"});
-  } catch (const std::exception& x) {
-    e = x.what();
-  }
+  });
   EXPECT_NE(e.find("magnetic field"), std::string::npos) << e;
   EXPECT_NE(e.find("axis"), std::string::npos) << e;
   EXPECT_NE(e.find("Grid::xmin"), std::string::npos) << e;

@@ -124,12 +124,7 @@ TEST(HandOffMetricReport, AgainstAnalyticMetric) {
 TEST(HandOffMetricReport, OffCentreDataWithCentre) {
   const MetricTov shifted("shifted", {-3.5, 42.0, 6.0}, 0, 0, true);
   const MetricTov centred("centred", {0, 0, 0}, 0, 0, true);
-  std::string e;
-  try {
-    hand_off(shifted, {});
-  } catch (const std::exception& x) {
-    e = x.what();
-  }
+  const std::string e = handoff_test::message_of([&] { hand_off(shifted, {}); });
   EXPECT_NE(e.find("the grid cuts the star"), std::string::npos) << e;
   const Result a = hand_off(shifted, {"HandOff::centre=[-3.5,42,6]"});
   const Result b = hand_off(centred, {});

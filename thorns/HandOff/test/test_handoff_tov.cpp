@@ -130,12 +130,7 @@ void check(const TovCarpet& data, const Result& r, const char* name, double rho_
 }
 
 std::string error_of(const TovCarpet& data, const std::vector<std::string>& overrides) {
-  try {
-    hand_off(data, overrides);
-  } catch (const std::exception& e) {
-    return e.what();
-  }
-  return "";
+  return handoff_test::message_of([&] { hand_off(data, overrides); });
 }
 
 TEST(HandOffTOV, CarpetToCylindrical2D) {

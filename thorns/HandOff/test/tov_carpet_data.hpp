@@ -3,7 +3,8 @@
 // MetricTov, FlooredTov): the BU0 star (K = 100, Gamma = 2, rho_c = 1.28e-3), a temporary folder
 // all ranks share (rank 0's pid; rank 0 writes the files and removes the folder), and the options
 // that hand the files to parfiles/handoff_tov_cyl_2d.yaml. A fixture adds its layout and variables
-// (write()).
+// (write()). And the message of a hand-off's error (message_of).
+#include <exception>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -42,5 +43,16 @@ const remnant::ThornCatalog& compiled_catalog();
 // A quiet run of parfiles/handoff_tov_cyl_2d.yaml on the data's files, then `overrides` (later
 // settings win: an override may name other files).
 remnant::SimulationOptions handoff_options(const TovCarpetData& data, const std::vector<std::string>& overrides);
+
+// The message of the exception f() throws ("" when it throws none).
+template <class F>
+std::string message_of(F&& f) {
+  try {
+    f();
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
 
 }  // namespace handoff_test
