@@ -120,9 +120,9 @@ TEST(Con2PrimRoots, NarrowedBracketHoldsTheRootAndTheAuxiliaryStartIsALowerBound
     const double from_mu0 = newton_bracketed(fa, 0.0, 1 / h_min, 1e-14, 60, b, mu_0);
     EXPECT_NEAR(from_mu0, from_hi, 1e-13 * from_hi);
     steps_from_hi += a.iterations, steps_from_mu0 += b.iterations;
-    MasterEval lo, hi;
+    MasterEval lo, hi, prior;
     RootSolution out;
-    ASSERT_TRUE(ks.narrow_bracket(lo, hi, out));
+    ASSERT_TRUE(ks.narrow_bracket(lo, hi, prior, out));
     EXPECT_LE(lo.f, 0);
     EXPECT_GE(hi.f, 0);
     const double mu_true = 1 / ((1 + p.eps + p.press / p.rho) * p.W);
