@@ -124,9 +124,11 @@ class KastaunSolver {
   // usually near the root; otherwise it is the new upper end and mu = 0 the lower one.
   // prior: an evaluation made here that is neither end (the upper end replaced by a nearer one), for
   // Brent's first step (brent_root); prior.x = NAN when there is none.
-  bool narrow_bracket(Eval& lo, Eval& hi, Eval& prior, RootSolution& out) {
+  // nearer = false: from mu_+ as before issue 21 (the recovery's fallback where the root reached from
+  // the nearer end does not reproduce the conserved variables: recover.hpp).
+  bool narrow_bracket(Eval& lo, Eval& hi, Eval& prior, RootSolution& out, bool nearer = true) {
     prior.x = NAN;
-    const double mu_p = mu_plus(out), mu_u = mu_upper(mu_p);
+    const double mu_p = mu_plus(out), mu_u = nearer ? mu_upper(mu_p) : mu_p;
     if (mu_u < mu_p) {
       hi = (*this)(mu_u * (1 + 1e-12));
       if (!(hi.f >= 0)) upper_end(hi, out);  // round-off where the bound is tight: mu_+ as before
@@ -174,20 +176,21 @@ class KastaunSolver {
   // early_stop (tables): Brent may stop one evaluation before closing its bracket (root_finding.hpp);
   // RootSolution::early_stop says it did, and the pipeline solves again without it where the result
   // does not reproduce the conserved variables to the root tolerance.
-  RootSolution solve(const Settings& s, bool early_stop = true) {
+  RootSolution solve(const Settings& s, bool early_stop = true, bool nearer_start = true) {
     RootSolution out;
     Eval lo, hi, prior;
     prior.x = NAN;
     // (iv) Brent on the bracket (narrowed for tables, where an evaluation costs a table search;
     // analytic EOS keep the bits that the regression suites hold).
-    if (!(kTabulated ? narrow_bracket(lo, hi, prior, out) : bracket(lo, hi, out))) {
+    if (!(kTabulated ? narrow_bracket(lo, hi, prior, out, nearer_start) : bracket(lo, hi, out))) {
       out.bracketed = out.converged = false;
       out.evaluations = thermo_.evaluations();
       return out;
     }
     Eval root, far;
     RootStats st = brent_root(*this, lo, hi, s.tolerance, s.max_iterations, root, far,
-                              kTabulated && early_stop ? kEarlyStop : 0.0, std::isnan(prior.x) ? nullptr : &prior);
+                              kTabulated && early_stop ? kEarlyStop : 0.0,
+                              std::isnan(prior.x) || !nearer_start ? nullptr : &prior);
     if (root.inv_flags & eos::kInvBelowEpsLow) {
       // Raising eps to eps_low(rho) (rule 8) can add a root beside the physical one where the table's
       // cold eps grows fast with rho (LS220 above ~5e15 g/cm^3): prefer an unclamped root below it.
