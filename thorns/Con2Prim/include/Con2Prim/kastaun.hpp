@@ -107,8 +107,9 @@ class KastaunSolver {
   // nu + mu rbar^2 >= 1 + qbar(mu) (nu >= nu_B = (1 + a)(1 + qbar - mu rbar^2) when that bracket is
   // >= 0, else nu >= nu_A > 0 > 1 + qbar - mu rbar^2), hence f(mu) >= mu - 1/(1 + qbar(mu)); qbar
   // falls with mu, so f >= 0 on [1/(1 + qbar(mu_+)), mu_+]. The root (every root) lies below that
-  // end, which is closer to it than mu_+ by 2-3 times (hot matter: p/(rho h W^2) against
-  // (h^2 - h_min^2)/(2 h^2 W^2)). Returns mu_plus where the bound does not apply.
+  // end, which is closer to it than mu_+ (without a field: by p/(rho h W^2) against about
+  // (h^2 - h_min^2)/(2 h^2 W^2); 4.8 times closer on average over random SFHo states, test
+  // Con2PrimRoots.TabulatedUpperEnd*). Returns mu_plus where the bound does not apply.
   double mu_upper(double mu_plus) const {
     const eos::Bounds& b = thermo_.bounds();
     if (!(b.press_min >= 0 && b.eps_min > -1)) return mu_plus;
