@@ -63,7 +63,7 @@ PlaneStats plane(const eos::Tabulated<eos::CountCalls>& e, Method m, int n) {
 struct Case {
   const char* table;
   Method method;
-  double max_calls;  // measured (40 x 40) + about 10 %
+  double max_calls;  // measured (40 x 40) + a margin (Kastaun: about 4 %, Palenzuela: about 10 %)
   double max_evaluations;  // the same
   int max_not_ok;
 };
@@ -75,9 +75,13 @@ TEST(Con2PrimCallCounts, RhoTPlaneOfBothTablesStaysWithinItsTableCallBudget) {
   // on remnant-c2p-bench's 100 x 100 plane.
   // Brent's early stop and ln p read with ln eps at every node (issue 21, second round): SFHo
   // Kastaun 16.5 -> 13.9 calls, 5.9 -> 5.1 evaluations; bounds were 18, 28, 45, 51 calls.
-  const Case cases[] = {{"SFHo_reduced_39r_39t_20y.h5", Method::kastaun, 15.5, 5.6, 0},
+  // Issue 21, goal 4 (Kastaun's analytic upper bracket end 1/(1 + qbar) and the three-point first
+  // Brent step): SFHo 13.88 -> 12.61 calls, 5.12 -> 4.70 evaluations; LS220 31.78 -> 29.46 calls,
+  // 5.25 -> 4.81 evaluations (this 40 x 40 plane). Bounds were 15.5 / 5.6 and 35 / 5.8; now about 4 %
+  // above the new counts, below the old ones.
+  const Case cases[] = {{"SFHo_reduced_39r_39t_20y.h5", Method::kastaun, 13.1, 4.9, 0},
                         {"SFHo_reduced_39r_39t_20y.h5", Method::palenzuela, 24.5, 9.2, 0},
-                        {"SRO_LS220_157r_89t_49y.h5", Method::kastaun, 35, 5.8, 45},
+                        {"SRO_LS220_157r_89t_49y.h5", Method::kastaun, 30.6, 5.0, 45},
                         {"SRO_LS220_157r_89t_49y.h5", Method::palenzuela, 43.5, 9.1, 45}};
   for (const Case& k : cases) {
     const std::string path = c2p_test::shared_eos(k.table);

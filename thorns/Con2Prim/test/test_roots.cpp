@@ -1,11 +1,14 @@
 // The root finders and the auxiliary function of the Kastaun scheme.
 #include <cmath>
+#include <cstdio>
 
 #include "Con2Prim/kastaun.hpp"
 #include "Con2Prim/prim_to_cons.hpp"
 #include "Con2Prim/root_finding.hpp"
 #include "Con2Prim/state_builder.hpp"
 #include "EOS/ideal_gas.hpp"
+#include "EOS/readers.hpp"
+#include "EOS/tabulated.hpp"
 #include "c2p_test_util.hpp"
 
 using namespace remnant::con2prim;
@@ -46,6 +49,32 @@ TEST(Con2PrimRoots, BrentReportsNonConvergence) {
   const RootStats st = brent_root(cube, cube(0.0), cube(3.0), 1e-15, 2, best, other);
   EXPECT_FALSE(st.converged);
   EXPECT_EQ(st.iterations, 2);
+}
+
+// A third point outside the bracket, handed over as Brent's previous iterate (issue 21: the point the
+// narrowed bracket of the tabulated Kastaun solver replaced): the first step interpolates through all
+// three points; the root is the same to the tolerance and the final pair still brackets it; a prior
+// equal to an end is ignored (bit for bit the plain run). Whether it saves steps depends on the
+// function: on Kastaun's master function it does (Con2PrimCallCounts), on this cube not always.
+TEST(Con2PrimRoots, BrentWithAPriorPointFindsTheSameRoot) {
+  const double root = std::cbrt(2.0);
+  int plain = 0, with_prior = 0, ignored = 0;
+  for (double hi : {1.3, 1.5, 2.0, 3.0}) {
+    const CubeEval far = cube(hi + 0.5);
+    CubeEval b0, o0, b1, o1, b2, o2;
+    const RootStats s0 = brent_root(cube, cube(1.0), cube(hi), 1e-12, 100, b0, o0);
+    const RootStats s1 = brent_root(cube, cube(1.0), cube(hi), 1e-12, 100, b1, o1, 0.0, &far);
+    const CubeEval same_as_end = cube(hi);
+    const RootStats s2 = brent_root(cube, cube(1.0), cube(hi), 1e-12, 100, b2, o2, 0.0, &same_as_end);
+    EXPECT_TRUE(s0.converged && s1.converged && s2.converged);
+    EXPECT_LT(std::abs(b1.x - root) / root, 1e-12) << hi;
+    EXPECT_TRUE(b1.f == 0 || (b1.f > 0) != (o1.f > 0));  // still a bracket at the end
+    EXPECT_EQ(b2.x, b0.x);  // ignored: the plain run, bit for bit
+    plain += s0.iterations, with_prior += s1.iterations, ignored += s2.iterations;
+  }
+  std::printf("Brent steps on 4 brackets: %d plain, %d with a prior point, %d with a prior equal to an end\n", plain,
+              with_prior, ignored);
+  EXPECT_EQ(ignored, plain);
 }
 
 TEST(Con2PrimRoots, NewtonWithBisectionSafeguard) {
@@ -120,9 +149,9 @@ TEST(Con2PrimRoots, NarrowedBracketHoldsTheRootAndTheAuxiliaryStartIsALowerBound
     const double from_mu0 = newton_bracketed(fa, 0.0, 1 / h_min, 1e-14, 60, b, mu_0);
     EXPECT_NEAR(from_mu0, from_hi, 1e-13 * from_hi);
     steps_from_hi += a.iterations, steps_from_mu0 += b.iterations;
-    MasterEval lo, hi;
+    MasterEval lo, hi, prior;
     RootSolution out;
-    ASSERT_TRUE(ks.narrow_bracket(lo, hi, out));
+    ASSERT_TRUE(ks.narrow_bracket(lo, hi, prior, out));
     EXPECT_LE(lo.f, 0);
     EXPECT_GE(hi.f, 0);
     const double mu_true = 1 / ((1 + p.eps + p.press / p.rho) * p.W);
@@ -134,4 +163,45 @@ TEST(Con2PrimRoots, NarrowedBracketHoldsTheRootAndTheAuxiliaryStartIsALowerBound
               steps_from_mu0, narrowed);
   EXPECT_LT(steps_from_mu0, steps_from_hi);
   EXPECT_GT(narrowed, 200);
+}
+
+// Tables (issue 21): the upper end 1/(1 + qbar(mu_+)) of the narrowed bracket, derived from a >= 0
+// without an EOS call, has f >= 0, lies above the true root and below mu_+, and is closer to the root
+// than mu_+ (which is what saves evaluations); the narrowed bracket still holds the root.
+TEST(Con2PrimRoots, TabulatedUpperEndBoundsTheRootAndIsNearerThanMuPlus) {
+  const std::string path = c2p_test::shared_eos("SFHo_reduced_39r_39t_20y.h5");
+  if (!std::filesystem::exists(path)) GTEST_SKIP() << "no table " << path;
+  const remnant::eos::Tabulated<> e(remnant::eos::load_table(path));
+  const remnant::eos::Bounds& b = e.bounds();
+  c2p_test::Randomiser R(21);
+  Settings s;
+  int nearer = 0, n = 0;
+  double sum_ratio = 0;
+  for (int k = 0; k < 400; ++k) {
+    const Metric3 g = R.metric();
+    const Primitives p = make_state(e, g, R.log_uniform(b.rho_min, b.rho_max), R.log_uniform(b.T_min, b.T_max),
+                                    R.uniform(b.ye_min, b.ye_max), R.log_uniform(1, 100),
+                                    k % 4 == 0 ? 0.0 : R.log_uniform(1e-6, 1e2), R.direction(), R.direction());
+    const Conserved c = prim_to_cons(p, g);
+    KastaunSolver<remnant::eos::Tabulated<>> ks(e, s, g, c, p.ye);
+    RootSolution out;
+    const double mu_p = ks.mu_plus(out), mu_u = ks.mu_upper(mu_p);
+    const double mu_true = 1 / ((1 + p.eps + p.press / p.rho) * p.W);
+    ASSERT_LE(mu_u, mu_p);
+    EXPECT_GE(mu_u * (1 + 1e-12), mu_true * (1 - 1e-10)) << k;
+    EXPECT_GE(ks(mu_u * (1 + 1e-12)).f, 0) << k;
+    MasterEval lo, hi, prior;
+    ASSERT_TRUE(ks.narrow_bracket(lo, hi, prior, out)) << k;
+    EXPECT_GE(mu_true, lo.x * (1 - 1e-10)) << k;
+    EXPECT_LE(mu_true, hi.x * (1 + 1e-10)) << k;
+    ++n;
+    if (mu_u < mu_p && mu_p - mu_true > 1e-8 * mu_true) {
+      ++nearer;
+      sum_ratio += (mu_p - mu_true) / std::max(mu_u - mu_true, 1e-16 * mu_true);
+    }
+  }
+  std::printf("mu_upper below mu_+ in %d of %d states; (mu_+ - mu)/(mu_upper - mu) mean %.2f\n", nearer, n,
+              nearer ? sum_ratio / nearer : 0.0);
+  EXPECT_GT(nearer, n / 2);
+  EXPECT_GT(sum_ratio / std::max(nearer, 1), 2.0);
 }

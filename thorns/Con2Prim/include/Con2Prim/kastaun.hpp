@@ -89,23 +89,53 @@ class KastaunSolver {
   }
   void upper_end(Eval& hi, RootSolution& out) {
     const double mu_max = 1 / h_min_;
+    hi = (*this)(std::min(mu_max, mu_plus(out) * (1 + 1e-12)));
+    if (hi.f < 0 && hi.x < mu_max) hi = (*this)(mu_max);
+  }
+  double mu_plus(RootSolution& out) const {
     RootStats aux_stats;
     // Start at 1/sqrt(h_min^2 + r^2): the root without a field, and a lower bound of mu_+ with one
     // (r_bar^2 <= r^2 since it falls with mu from r^2 at mu = 0).
     const double mu_0 = kTabulated ? 1 / std::sqrt(h_min_ * h_min_ + r2_) : NAN;  // analytic: their bits
-    const double mu_plus = newton_bracketed([&](double mu, double& f, double& df) { aux(mu, f, df); }, 0.0,
-                                            mu_max, 1e-14, 60, aux_stats, mu_0);
+    const double mu = newton_bracketed([&](double m, double& f, double& df) { aux(m, f, df); }, 0.0, 1 / h_min_,
+                                       1e-14, 60, aux_stats, mu_0);
     out.aux_iterations = aux_stats.iterations;
-    hi = (*this)(std::min(mu_max, mu_plus * (1 + 1e-12)));
-    if (hi.f < 0 && hi.x < mu_max) hi = (*this)(mu_max);
+    return mu;
+  }
+
+  // A nearer upper end than mu_+ without an EOS call, where p >= 0 and eps > -1 (so a >= 0):
+  // nu + mu rbar^2 >= 1 + qbar(mu) (nu >= nu_B = (1 + a)(1 + qbar - mu rbar^2) when that bracket is
+  // >= 0, else nu >= nu_A > 0 > 1 + qbar - mu rbar^2), hence f(mu) >= mu - 1/(1 + qbar(mu)); qbar
+  // falls with mu, so f >= 0 on [1/(1 + qbar(mu_+)), mu_+]. The root (every root) lies below that
+  // end, which is closer to it than mu_+ (without a field: by p/(rho h W^2) against about
+  // (h^2 - h_min^2)/(2 h^2 W^2); 4.8 times closer on average over random SFHo states, test
+  // Con2PrimRoots.TabulatedUpperEnd*). Returns mu_plus where the bound does not apply.
+  double mu_upper(double mu_plus) const {
+    const eos::Bounds& b = thermo_.bounds();
+    if (!(b.press_min >= 0 && b.eps_min > -1)) return mu_plus;
+    const double chi = 1 / (1 + mu_plus * Bc2_);
+    const double one_qbar = 1 + q_ - 0.5 * Bc2_ - 0.5 * mu_plus * mu_plus * chi * chi * rperp2_Bc2_;
+    if (!(one_qbar > 0)) return mu_plus;
+    return std::min(mu_plus, 1 / one_qbar);
   }
 
   // The same bracket, narrowed for the root finder: f(mu) = mu - g(mu), and the fixed-point image
   // g(mu_hi) = mu_hi - f(mu_hi) of the upper end lies below the root wherever g decreases (the usual
   // case: f >= 0 there is checked, not assumed). Then it is the lower end, in place of mu = 0, and
   // usually near the root; otherwise it is the new upper end and mu = 0 the lower one.
-  bool narrow_bracket(Eval& lo, Eval& hi, RootSolution& out) {
-    upper_end(hi, out);
+  // prior: an evaluation made here that is neither end (the upper end replaced by a nearer one), for
+  // Brent's first step (brent_root); prior.x = NAN when there is none.
+  // nearer = false: from mu_+ as before issue 21 (the recovery's fallback where the root reached from
+  // the nearer end does not reproduce the conserved variables: recover.hpp).
+  bool narrow_bracket(Eval& lo, Eval& hi, Eval& prior, RootSolution& out, bool nearer = true) {
+    prior.x = NAN;
+    const double mu_p = mu_plus(out), mu_u = nearer ? mu_upper(mu_p) : mu_p;
+    if (mu_u < mu_p) {
+      hi = (*this)(mu_u * (1 + 1e-12));
+      if (!(hi.f >= 0)) upper_end(hi, out);  // round-off where the bound is tight: mu_+ as before
+    } else {
+      upper_end(hi, out);
+    }
     if (!(hi.f >= 0)) return false;
     const double mu1 = hi.x - hi.f;
     if (mu1 > 0 && mu1 < hi.x) {
@@ -120,7 +150,7 @@ class KastaunSolver {
           const double mu2 = m.x - 1.25 * step;
           if (mu2 > 0 && mu2 < m.x) {
             const Eval m2 = (*this)(mu2);
-            if (m2.f <= 0) return lo = m2, true;
+            if (m2.f <= 0) return lo = m2, prior = h0, true;
             if (m2.f > 0) hi = m2;
           }
         }
@@ -147,19 +177,21 @@ class KastaunSolver {
   // early_stop (tables): Brent may stop one evaluation before closing its bracket (root_finding.hpp);
   // RootSolution::early_stop says it did, and the pipeline solves again without it where the result
   // does not reproduce the conserved variables to the root tolerance.
-  RootSolution solve(const Settings& s, bool early_stop = true) {
+  RootSolution solve(const Settings& s, bool early_stop = true, bool nearer_start = true) {
     RootSolution out;
-    Eval lo, hi;
+    Eval lo, hi, prior;
+    prior.x = NAN;
     // (iv) Brent on the bracket (narrowed for tables, where an evaluation costs a table search;
     // analytic EOS keep the bits that the regression suites hold).
-    if (!(kTabulated ? narrow_bracket(lo, hi, out) : bracket(lo, hi, out))) {
+    if (!(kTabulated ? narrow_bracket(lo, hi, prior, out, nearer_start) : bracket(lo, hi, out))) {
       out.bracketed = out.converged = false;
       out.evaluations = thermo_.evaluations();
       return out;
     }
     Eval root, far;
     RootStats st = brent_root(*this, lo, hi, s.tolerance, s.max_iterations, root, far,
-                              kTabulated && early_stop ? kEarlyStop : 0.0);
+                              kTabulated && early_stop ? kEarlyStop : 0.0,
+                              std::isnan(prior.x) || !nearer_start ? nullptr : &prior);
     if (root.inv_flags & eos::kInvBelowEpsLow) {
       // Raising eps to eps_low(rho) (rule 8) can add a root beside the physical one where the table's
       // cold eps grows fast with rho (LS220 above ~5e15 g/cm^3): prefer an unclamped root below it.

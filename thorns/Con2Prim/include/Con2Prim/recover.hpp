@@ -205,6 +205,16 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
       if (!good) best = c, rep.root_scan = true;
       ++good;
     }
+    if constexpr (eos::is_tabulated_v<E>)
+      if (!good && s.method == Method::kastaun) {
+        // Several roots, none of those found clean (the scan's 128 intervals can miss a close pair):
+        // Kastaun from mu_+ (the bracket before issue 21's nearer upper end) may reach another root.
+        const RootSolution alt = KastaunSolver<E>(eos, s, g, cons, prim.ye, T_hint).solve(s, false, false);
+        if (alt.bracketed && alt.converged) {
+          const detail::Candidate c = detail::complete(eos, s, atm, g, input, alt, prim, ye_rules);
+          if (c.clean() && c.residual <= s.accuracy) best = c, rep.root_scan = true, good = 1;
+        }
+      }
     if (good > 1) rep.status = Status::ambiguous;
   }
   prim = best.prim;
