@@ -51,9 +51,13 @@ XcfcSolver& solver(Context& ctx) {
           rt.warned_theta = true;
     rt.layout = lay;
     rt.update_A = {};  // of the old mesh
-    // The base level's cycles are split between the ranks; patches are computed by every rank.
-    rt.solver = lay.patches.empty() ? std::make_unique<XcfcSolver>(lay.base, ctx.grid().comm())
-                                    : std::make_unique<XcfcSolver>(lay, ctx.grid().comm());
+    // The base level's cycles are split between the ranks (its 3D levels also stored split with
+    // XCFC::multigrid_storage = distributed); patches are relaxed by their owners.
+    const MultigridStorage storage = ctx.param<std::string>("XCFC", "multigrid_storage") == "distributed"
+                                         ? MultigridStorage::distributed
+                                         : MultigridStorage::replicated;
+    rt.solver = lay.patches.empty() ? std::make_unique<XcfcSolver>(lay.base, ctx.grid().comm(), storage)
+                                    : std::make_unique<XcfcSolver>(lay, ctx.grid().comm(), storage);
   }
   return *rt.solver;
 }

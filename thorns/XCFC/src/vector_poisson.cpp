@@ -197,6 +197,14 @@ CompositeField divergence(CompositeMultigrid& mg, const VectorField& up) {
 
 namespace {
 
+// The cell's Cartesian position, coords::to_cartesian(s.coordinates, s.point(i, j, k)) with the same
+// bits, without two out-of-line calls per cell on Cartesian grids (the monopole's loops below run
+// over every cell of every part on every rank: 10 % of a 3D Cartesian solve's instructions).
+inline Point3 cartesian_position(const GridShape& s, int i, int j, int k) {
+  if (s.coordinates != CoordinateSystem::cartesian) return coords::to_cartesian(s.coordinates, s.point(i, j, k));
+  return {s.centre(0, i), s.used(1) ? s.centre(1, j) : 0.0, s.used(2) ? s.centre(2, k) : 0.0};
+}
+
 // A compact, smooth unit charge q = c (1 - r^2/R^2)^2 (r < R) centred at the Cartesian origin, and
 // its potential g (Lap g = q, g = -1/(4 pi r) outside).
 struct UnitCharge {
@@ -258,12 +266,17 @@ double monopole_weight(const CompositeMultigrid& mg, const CompositeField& src, 
   double m = 0, q = 0;
   for (int n = 0; n < mg.parts(); ++n) {
     const GridShape& s = mg.part(n).shape;
+    // The cell integrals per direction and index (separable): 1D tables, multiplied per cell in the
+    // same order as before.
+    std::array<std::vector<double>, 3> w;
+    for (int d = 0; d < s.dimension; ++d)
+      for (int i = 0; i < s.n[d]; ++i) w[d].push_back(coords::volume_factor_integral(s.coordinates, d, s.face(d, i), s.face(d, i + 1)));
     for_part_cells(mg.part(n), [&](std::size_t c, std::size_t, int i, int j, int k) {
       if (mg.covered(n, c)) return;
       const std::array<int, 3> ijk{i, j, k};
       double vol = 1;
-      for (int d = 0; d < s.dimension; ++d) vol *= coords::volume_factor_integral(s.coordinates, d, s.face(d, ijk[d]), s.face(d, ijk[d] + 1));
-      const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
+      for (int d = 0; d < s.dimension; ++d) vol *= w[d][static_cast<std::size_t>(ijk[d])];
+      const Point3 X = cartesian_position(s, i, j, k);
       m += src.part[static_cast<std::size_t>(n)][c] * vol;
       q += unit.q(std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2])) * vol;
     });
@@ -277,7 +290,7 @@ void add_cartesian(const CompositeMultigrid& mg, CompositeField& f, double w, Fn
   for (int n = 0; n < mg.parts(); ++n) {
     const GridShape& s = mg.part(n).shape;
     for_part_cells(mg.part(n), [&](std::size_t c, std::size_t, int i, int j, int k) {
-      const Point3 X = coords::to_cartesian(s.coordinates, s.point(i, j, k));
+      const Point3 X = cartesian_position(s, i, j, k);
       f.part[static_cast<std::size_t>(n)][c] += w * fn(X, std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
     });
   }

@@ -62,8 +62,9 @@ ScalarEquation lapse_equation() {
   return eq;
 }
 
-XcfcSolver::XcfcSolver(const GridShape& shape, MPI_Comm comm) : mg_(shape, comm) {}
-XcfcSolver::XcfcSolver(const CompositeLayout& layout, MPI_Comm comm) : mg_(layout, comm) {}
+XcfcSolver::XcfcSolver(const GridShape& shape, MPI_Comm comm, MultigridStorage storage) : mg_(shape, comm, storage) {}
+XcfcSolver::XcfcSolver(const CompositeLayout& layout, MPI_Comm comm, MultigridStorage storage)
+    : mg_(layout, comm, storage) {}
 
 const SolverGeometry& XcfcSolver::geometry() {
   if (!geometry_.current_for(mg_)) geometry_ = SolverGeometry(mg_);  // first use, or mg_ replaced

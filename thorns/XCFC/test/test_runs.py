@@ -38,6 +38,10 @@
   curvilinear3d  the star on a 3D spherical grid (phi periodic): converged solves, bit-identical on 1
                  and 2 ranks, the initial metric equal to the 2D one (and on a 3D cylindrical grid); the same refined once inside
                  r = 10 (composite solves): converged, bit-identical on 1 and 2 ranks
+  storage        XCFC::multigrid_storage=distributed (the base multigrid's 3D levels stored in slabs):
+                 the refined 3D Cartesian rotating star (parfiles/rns_uniform_cart_3d.yaml, one level)
+                 gives bit-identical analysis.tsv and xcfc.tsv on 1 rank (replicated), on 2 ranks
+                 (distributed) and after a 1 -> 2 rank restart (distributed)
 """
 import os
 import sys
@@ -372,11 +376,30 @@ def mode_adaptive(r):
           % [l.split("\t")[13] for l in a])
 
 
+def mode_storage(r):
+    parfile = os.path.abspath(os.path.join(r.a.source_dir, "parfiles", "rns_uniform_cart_3d.yaml"))
+    rns = remnant_runs.Runner(r.a, parfile, ["Flesh::timers=false", "Flesh::progress_every=0", "Analysis::every=1",
+                                             "Grid::max_level=1", "Grid::regions=[box]", "Grid::region_levels=[1]",
+                                             "Grid::region_bounds=[-32,32,-32,32,0,32]", "XCFC::solve_every=2"])
+    dist = ["XCFC::multigrid_storage=distributed"]
+    one, _ = rns.run("replicated_np1", 1, ["MoL::max_iterations=6"])
+    two, _ = rns.run("distributed_np2", 2, dist + ["MoL::max_iterations=6"])
+    first, _ = rns.run("distributed_restart", 1, dist + ["MoL::max_iterations=4", "IO::checkpoint_every=3"])
+    _, p = rns.run("distributed_restart", 2, dist + ["MoL::max_iterations=6", "IO::recover=auto"])
+    assert "recovered from" in p.stdout, p.stdout[-3000:]
+    for other, what in ((two, "2 ranks"), (first, "a 1 -> 2 rank restart")):
+        assert rows(os.path.join(one, "analysis.tsv")) == rows(os.path.join(other, "analysis.tsv")), "analysis.tsv differs on " + what
+        assert rows(os.path.join(one, "xcfc.tsv"), True) == rows(os.path.join(other, "xcfc.tsv"), True), "xcfc.tsv differs on " + what
+    assert len(rows(os.path.join(one, "xcfc.tsv"))) >= 4
+    print("refined 3D Cartesian run with distributed multigrid storage: analysis.tsv and xcfc.tsv bit-identical on 1 rank"
+          " (replicated), 2 ranks and after a 1 -> 2 rank restart")
+
+
 def main():
     remnant_runs.main(make_runner, {"restart": mode_restart, "extrapolation": mode_extrapolation,
                                     "trigger": mode_trigger, "update": mode_update, "mass": mode_mass, "amr": mode_amr,
                                     "migration": mode_migration, "curvilinear3d": mode_curvilinear3d,
-                                    "adaptive": mode_adaptive})
+                                    "adaptive": mode_adaptive, "storage": mode_storage})
 
 
 if __name__ == "__main__":

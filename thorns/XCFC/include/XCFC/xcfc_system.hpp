@@ -36,8 +36,11 @@ struct XcfcState {
 
 class XcfcSolver {
  public:
-  explicit XcfcSolver(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF);          // uniform grid
-  explicit XcfcSolver(const CompositeLayout& layout, MPI_Comm comm = MPI_COMM_SELF);  // refined grid
+  // storage: the base grid multigrid's level storage on several ranks (XCFC::multigrid_storage).
+  explicit XcfcSolver(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF,
+                      MultigridStorage storage = MultigridStorage::replicated);  // uniform grid
+  explicit XcfcSolver(const CompositeLayout& layout, MPI_Comm comm = MPI_COMM_SELF,
+                      MultigridStorage storage = MultigridStorage::replicated);  // refined grid
   const GridShape& shape() const { return mg_.base_shape(); }
   CompositeMultigrid& multigrid() { return mg_; }
 

@@ -8,7 +8,7 @@ namespace {
 
 // Dirichlet values at the outer faces (manufactured solutions only: a callback per ghost).
 void fill_dirichlet(const Level& L, const ScalarEquation& eq, std::vector<double>& a, bool homogeneous, int d,
-                    int side, const std::array<int, 3>& lo, const std::array<int, 3>& hi) {
+                    int side, const std::array<int, 3>& lo, const std::array<int, 3>& hi, std::ptrdiff_t b0) {
   const GridShape& s = L.shape;
   const int e1 = (d + 1) % 3, e2 = (d + 2) % 3;
   const Level::GhostFace& gf = L.ghost_faces[d][side];
@@ -19,16 +19,17 @@ void fill_dirichlet(const Level& L, const ScalarEquation& eq, std::vector<double
       g[d] = side == 0 ? -1 : s.n[d], g[e1] = t1, g[e2] = t2;
       Point3 xf = s.point(g[0], g[1], g[2]);
       xf[d] = s.face(d, side == 0 ? 0 : s.n[d]);
-      const double inner = a[static_cast<std::size_t>(gf.inner[t])];
-      a[static_cast<std::size_t>(gf.ghost[t])] = (homogeneous ? 0.0 : 2.0 * eq.dirichlet(xf)) - inner;
+      const double inner = a[static_cast<std::size_t>(gf.inner[t] - b0)];
+      a[static_cast<std::size_t>(gf.ghost[t] - b0)] = (homogeneous ? 0.0 : 2.0 * eq.dirichlet(xf)) - inner;
     }
 }
 
 }  // namespace
 
 std::size_t fill_ghosts(const Level& L, const ScalarEquation& eq, std::vector<double>& a, bool homogeneous,
-                        const GhostBox& box) {
+                        const GhostBox& box, std::ptrdiff_t base) {
   std::size_t filled = 0;
+  const std::ptrdiff_t b0 = base == kLevelBase ? L.gbase : base;  // the face lists hold global offsets
   const GridShape& s = L.shape;
   double* v = a.data();
   std::array<int, 3> lo{}, hi{};  // the box's interior cells
@@ -54,10 +55,10 @@ std::size_t fill_ghosts(const Level& L, const ScalarEquation& eq, std::vector<do
       if (s.boundary[d][side] != Boundary::outer) {
         const double parity = eq.parity[d][side];
         for_runs([&](std::size_t t0, std::size_t t1) {
-          for (std::size_t t = t0; t < t1; ++t) v[g[t]] = parity * v[mi[t]];
+          for (std::size_t t = t0; t < t1; ++t) v[g[t] - b0] = parity * v[mi[t] - b0];
         });
       } else if (eq.dirichlet) {
-        fill_dirichlet(L, eq, a, homogeneous, d, side, lo, hi);
+        fill_dirichlet(L, eq, a, homogeneous, d, side, lo, hi, b0);
       } else {
         const double u_inf = homogeneous ? 0.0 : eq.far_value;
         const std::vector<double>& r = eq.falloff == 2.0 ? L.robin2[d][side] : L.robin1[d][side];
@@ -65,7 +66,7 @@ std::size_t fill_ghosts(const Level& L, const ScalarEquation& eq, std::vector<do
         for_runs([&](std::size_t t0, std::size_t t1) {
           for (std::size_t t = t0; t < t1; ++t) {
             const double ratio = power ? std::pow(r[t], eq.falloff) : r[t];
-            v[g[t]] = u_inf + (v[in[t]] - u_inf) * ratio;
+            v[g[t] - b0] = u_inf + (v[in[t] - b0] - u_inf) * ratio;
           }
         });
       }

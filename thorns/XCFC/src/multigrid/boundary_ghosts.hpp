@@ -19,8 +19,10 @@ struct GhostBox {
 // the conditions of a correction (far value 0, Dirichlet value 0). Only the ghosts next to the
 // box's cells (a ghost's value depends on its own face entry only, so the filled ones have the
 // bits of a whole fill).
-// Returns the number of ghosts filled.
+// `base`: the ghosted offset of a's first entry (kLevelBase: the level's own window, L.gbase; 0 for
+// an array of the whole level). Returns the number of ghosts filled.
+inline constexpr std::ptrdiff_t kLevelBase = -1;
 std::size_t fill_ghosts(const Level& L, const ScalarEquation& eq, std::vector<double>& a, bool homogeneous,
-                        const GhostBox& box = GhostBox{});
+                        const GhostBox& box = GhostBox{}, std::ptrdiff_t base = kLevelBase);
 
 }  // namespace remnant::xcfc

@@ -43,7 +43,7 @@ struct CompositeMultigrid::Impl {
   }
 
   // The tiers of a layout, the base solver, the parts and their cell frames.
-  Impl(const CompositeLayout& l, MPI_Comm c);
+  Impl(const CompositeLayout& l, MPI_Comm c, MultigridStorage storage);
   std::size_t part_index(int t, std::size_t p) const {
     std::size_t i = p;
     for (int s = 0; s < t; ++s) i += tiers[static_cast<std::size_t>(s)].patches.size();

@@ -32,7 +32,8 @@
 
 namespace remnant::xcfc {
 
-CompositeMultigrid::Impl::Impl(const CompositeLayout& l, MPI_Comm c) : layout(l), base(l.base, c), comm(c) {
+CompositeMultigrid::Impl::Impl(const CompositeLayout& l, MPI_Comm c, MultigridStorage storage)
+    : layout(l), base(l.base, c, storage), comm(c) {
   if (comm != MPI_COMM_SELF) {  // MPI_COMM_SELF needs no MPI call (unit tests, benchmarks without MPI_Init)
     MPI_Comm_rank(comm, &rank);
     MPI_Comm_size(comm, &nranks);
@@ -303,10 +304,10 @@ ScalarEquation CompositeMultigrid::Impl::base_equation(const CompositeEquation& 
   return b;
 }
 
-CompositeMultigrid::CompositeMultigrid(const CompositeLayout& layout, MPI_Comm comm)
-    : impl_(std::make_unique<Impl>(layout, comm)) {}
-CompositeMultigrid::CompositeMultigrid(const GridShape& shape, MPI_Comm comm)
-    : CompositeMultigrid(CompositeLayout{shape, {1, 1, 1}, {}}, comm) {}
+CompositeMultigrid::CompositeMultigrid(const CompositeLayout& layout, MPI_Comm comm, MultigridStorage storage)
+    : impl_(std::make_unique<Impl>(layout, comm, storage)) {}
+CompositeMultigrid::CompositeMultigrid(const GridShape& shape, MPI_Comm comm, MultigridStorage storage)
+    : CompositeMultigrid(CompositeLayout{shape, {1, 1, 1}, {}}, comm, storage) {}
 CompositeMultigrid::~CompositeMultigrid() = default;
 CompositeMultigrid::CompositeMultigrid(CompositeMultigrid&&) noexcept = default;
 CompositeMultigrid& CompositeMultigrid::operator=(CompositeMultigrid&&) noexcept = default;

@@ -46,6 +46,8 @@ Level::Level(const GridShape& s) : shape(s) {
   st[1] = s.n[0] + 2 * g[0];
   st[2] = st[1] * (s.n[1] + 2 * g[1]);
   ghosted_size = static_cast<std::size_t>(st[2]) * (s.n[2] + 2 * g[2]);
+  stored_ghosted = ghosted_size;
+  stored_cells = cells();
   const std::size_t nc = cells();
   volume.assign(nc, 0.0);
   diagonal.assign(nc, 0.0);
@@ -133,6 +135,25 @@ Level::Level(const GridShape& s) : shape(s) {
         }
     }
   }
+}
+
+void Level::set_window(int lo, int hi) {
+  const int s = shape.dimension - 1;
+  const std::size_t nc = cells(), plane = nc / static_cast<std::size_t>(shape.n[s]);
+  gbase = static_cast<std::ptrdiff_t>(lo - 1 + g[s]) * st[s];
+  stored_ghosted = static_cast<std::size_t>(hi - lo + 2) * static_cast<std::size_t>(st[s]);
+  cbase = static_cast<std::size_t>(lo) * plane;
+  stored_cells = static_cast<std::size_t>(hi - lo) * plane;
+  // A fresh vector of the window alone: its capacity is the window's.
+  auto slice = [&](std::vector<double>& v) {
+    if (v.size() != nc) return;
+    const auto b = v.begin() + static_cast<std::ptrdiff_t>(cbase);
+    v = std::vector<double>(b, b + static_cast<std::ptrdiff_t>(stored_cells));
+  };
+  for (auto* v : {&volume, &diagonal, &restrict_volume, &k, &s0, &s1, &s7, &f, &r, &k_eq}) slice(*v);
+  for (int d = 0; d < 3; ++d)
+    for (auto* v : {&a_lo[d], &a_hi[d], &mode_k[d], &line_w[d], &line_inv[d]}) slice(*v);
+  u.clear(), ubar.clear();
 }
 
 std::size_t Level::stored_bytes() const {

@@ -51,16 +51,31 @@ struct Level {
   std::vector<double> k_eq;                       // k without the angular-mode term (restricted)
   std::vector<double> u, ubar;                    // ghosted
 
+  // Distributed storage (Multigrid::Storage::distributed): the arrays hold only a window of planes
+  // along the last used direction, the owned cells [lo, hi) and one halo plane on each side in
+  // ghosted arrays; at() and cell() take global indices and return offsets into the window
+  // (bases 0 and whole sizes when the level is stored whole).
+  std::ptrdiff_t gbase = 0;         // ghosted offset of the window's first entry
+  std::size_t cbase = 0;            // interior index of the window's first cell
+  std::size_t stored_ghosted = 0;   // entries of a ghosted array as stored
+  std::size_t stored_cells = 0;     // entries of an interior array as stored
+
   explicit Level(const GridShape& s);
+  // Keeps only the window of planes [lo, hi) along the last used direction (and the halo planes in
+  // ghosted arrays) of every per-cell array; max_diagonal and the face lists stay global.
+  void set_window(int lo, int hi);
+  bool windowed() const { return stored_cells != cells(); }
   std::size_t stored_bytes() const;  // capacity of all arrays
-  std::size_t cells() const { return shape.cells(); }
-  std::ptrdiff_t at(int i, int j, int k) const { return (i + g[0]) + (j + g[1]) * st[1] + (k + g[2]) * st[2]; }
+  std::size_t cells() const { return shape.cells(); }  // of the whole level
+  std::ptrdiff_t global_at(int i, int j, int k) const { return (i + g[0]) + (j + g[1]) * st[1] + (k + g[2]) * st[2]; }
+  std::ptrdiff_t at(int i, int j, int k) const { return global_at(i, j, k) - gbase; }
   std::ptrdiff_t at_cell(std::size_t q) const {  // ghosted offset of interior cell q
     const auto n0 = static_cast<std::size_t>(shape.n[0]), n1 = static_cast<std::size_t>(shape.n[1]);
     return at(static_cast<int>(q % n0), static_cast<int>((q / n0) % n1), static_cast<int>(q / (n0 * n1)));
   }
   std::size_t cell(int i, int j, int k) const {
-    return static_cast<std::size_t>(i) + static_cast<std::size_t>(shape.n[0]) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(shape.n[1]) * k);
+    return static_cast<std::size_t>(i) + static_cast<std::size_t>(shape.n[0]) * (static_cast<std::size_t>(j) + static_cast<std::size_t>(shape.n[1]) * k) -
+           cbase;
   }
 };
 

@@ -28,7 +28,7 @@ bool coarsens(const GridShape& s, int d) {
 }
 }  // namespace
 
-Multigrid::Impl::Impl(const GridShape& shape, MPI_Comm c) : work(c) {
+Multigrid::Impl::Impl(const GridShape& shape, MPI_Comm c, MultigridStorage storage) : work(c) {
   levels.emplace_back(shape);
   {
     const Level& L = levels[0];
@@ -80,7 +80,9 @@ Multigrid::Impl::Impl(const GridShape& shape, MPI_Comm c) : work(c) {
     if (s.dimension == 2 && s.boundary[0][0] == Boundary::origin)
       rank0_extra[l] = kOriginPasses * origin_shells(levels[l]) / kSweeps;
   }
-  work.build(levels, rank0_extra);
+  work.build(levels, rank0_extra, storage == MultigridStorage::distributed);
+  for (std::size_t l = 0; l < levels.size(); ++l)
+    if (work.part(l).windowed) levels[l].set_window(work.part(l).lo, work.part(l).hi);
   line_splits.resize(levels.size());
 }
 
@@ -95,21 +97,27 @@ void Multigrid::Impl::add_mode_term(Level& L, AngularMode mode) {
   for (std::size_t q = 0; q < L.k.size(); ++q) L.k[q] += mk[q];
 }
 
+void Multigrid::Impl::copy_window(const std::vector<double>& whole, std::vector<double>& out) const {
+  const Level& L0 = levels[0];
+  const auto b = whole.begin() + static_cast<std::ptrdiff_t>(L0.cbase);
+  out.assign(b, b + static_cast<std::ptrdiff_t>(L0.stored_cells));
+}
+
 void Multigrid::Impl::set_fine_equation(const ScalarEquation& eq) {
   Level& L0 = levels[0];
-  const std::size_t n = L0.cells();
+  const std::size_t n = L0.stored_cells;
   auto copy = [&](const std::vector<double>& v, std::vector<double>& out) {
     if (v.empty()) out.assign(n, 0.0);
-    else out.assign(v.begin(), v.end());
+    else copy_window(v, out);
   };
   copy(eq.k, L0.k_eq);
   copy(eq.s0, L0.s0);
-  if (eq.s1.empty()) L0.s1.clear(); else L0.s1.assign(eq.s1.begin(), eq.s1.end());
-  if (eq.s7.empty()) L0.s7.clear(); else L0.s7.assign(eq.s7.begin(), eq.s7.end());
+  if (eq.s1.empty()) L0.s1.clear(); else copy_window(eq.s1, L0.s1);
+  if (eq.s7.empty()) L0.s7.clear(); else copy_window(eq.s7, L0.s7);
   add_mode_term(L0, eq.mode);
   L0.f.assign(n, 0.0);
   L0.r.resize(n);
-  if (L0.u.size() != L0.ghosted_size) L0.u.assign(L0.ghosted_size, 0.0);
+  if (L0.u.size() != L0.stored_ghosted) L0.u.assign(L0.stored_ghosted, 0.0);
   L0.factored = false;
   equations_ready = Ready::none;
 }
@@ -124,30 +132,33 @@ void Multigrid::Impl::set_coarse_equations(const ScalarEquation& eq, bool fine_o
     Level &F = levels[l], &C = levels[l + 1];
     if (fine_only) {
       // The cache's factors of every level need each level's k (zeros and the mode term).
-      if (factor_all) C.k_eq.assign(C.cells(), 0.0), add_mode_term(C, eq.mode);
+      if (factor_all) C.k_eq.assign(C.stored_cells, 0.0), add_mode_term(C, eq.mode);
       continue;
     }
     // Once per solve; the coarse equations are complete on every rank afterwards (the lines across
     // the slabs and the undistributed levels below read all of them). A distributed coarse level
     // restricts its own slab (nested in the fine one's) and gathers the rest: each coarse cell sums
     // the same fine cells in the same order, so the bits do not depend on the rank count.
-    const bool split = work.part(l + 1).dist;
-    const Range RF = split ? work.range(l) : work.full(l), RC = split ? work.range(l + 1) : work.full(l + 1);
+    // Distributed storage: split levels restrict their own slabs and keep them; the level below the
+    // split is agglomerated (each rank restricts under its fine slab, MPI_Allgatherv the rest).
+    const bool split = work.part(l + 1).dist, agg = work.part(l + 1).agglomerated;
+    const Range RF = split || agg ? work.range(l) : work.full(l), RC = split || agg ? work.restricted_range(l + 1) : work.full(l + 1);
     auto restricted = [&](const std::vector<double>& fine, std::vector<double>& coarse) {
       restrict_interior(F, C, fine, coarse, RF, RC);
       restricted_cells += static_cast<long long>(F.shape.n[0]) * (RF.j1 - RF.j0) * (RF.k1 - RF.k0);
-      work.replicate(l + 1, coarse, false);
+      if (agg) work.agglomerate(l + 1, coarse, false);
+      else if (!work.part(l + 1).windowed) work.replicate(l + 1, coarse, false);
     };
     // No matter coefficient: zeros restrict to zeros (the same bits, none of the work).
-    if (zero_k) C.k_eq.assign(C.cells(), 0.0);
+    if (zero_k) C.k_eq.assign(C.stored_cells, 0.0);
     else restricted(F.k_eq, C.k_eq);
     restricted(F.s0, C.s0);
     if (F.s1.empty()) C.s1.clear(); else restricted(F.s1, C.s1);
     if (F.s7.empty()) C.s7.clear(); else restricted(F.s7, C.s7);
     add_mode_term(C, eq.mode);
-    C.f.resize(C.cells());
-    C.r.resize(C.cells());
-    if (C.u.size() != C.ghosted_size) C.u.assign(C.ghosted_size, 0.0);
+    C.f.resize(C.stored_cells);
+    C.r.resize(C.stored_cells);
+    if (C.u.size() != C.stored_ghosted) C.u.assign(C.stored_ghosted, 0.0);
   }
   if (!factor_cache.acquire(levels, eq)) {
     const std::size_t factored_levels = factor_all ? levels.size() : 1;
@@ -195,26 +206,43 @@ double Multigrid::Impl::max_abs_owned(std::size_t l, const std::vector<double>& 
   const auto& p = work.part(l);
   std::size_t b = 0, e = a.size();
   if (p.dist) {  // the owned planes, the domain's ghost planes with the first and last slab
-    const auto plane = static_cast<std::size_t>(p.plane);
-    if (work.rank() > 0) b = static_cast<std::size_t>(p.lo + 1) * plane;
-    if (work.rank() + 1 < work.nranks()) e = static_cast<std::size_t>(p.hi + 1) * plane;
+    const auto plane = static_cast<std::size_t>(p.plane), base = static_cast<std::size_t>(p.gbase);
+    if (work.rank() > 0) b = static_cast<std::size_t>(p.lo + 1) * plane - base;
+    if (work.rank() + 1 < work.nranks()) e = static_cast<std::size_t>(p.hi + 1) * plane - base;
   }
   double m = 0;
   for (std::size_t q = b; q < e; ++q) m = std::max(m, std::abs(a[q]));
   return work.global_max(m);  // a max is exact in any order
 }
 
+// A windowed level 0 loads and stores its own cells (q + cbase: their index in the whole array).
 void Multigrid::Impl::load(const std::vector<double>& u) {
   Level& L = levels[0];
-  for_cells(L, full_range(L), [&](std::size_t q, std::ptrdiff_t p) { L.u[static_cast<std::size_t>(p)] = u[q]; });
+  const std::size_t b = L.cbase;
+  for_cells(L, L.windowed() ? work.range(0) : full_range(L),
+            [&](std::size_t q, std::ptrdiff_t p) { L.u[static_cast<std::size_t>(p)] = u[q + b]; });
 }
 
 void Multigrid::Impl::store(std::vector<double>& u) const {
   const Level& L = levels[0];
-  for_cells(L, full_range(L), [&](std::size_t q, std::ptrdiff_t p) { u[q] = L.u[static_cast<std::size_t>(p)]; });
+  const std::size_t b = L.cbase;
+  for_cells(L, L.windowed() ? work.range(0) : full_range(L),
+            [&](std::size_t q, std::ptrdiff_t p) { u[q + b] = L.u[static_cast<std::size_t>(p)]; });
 }
 
-Multigrid::Multigrid(const GridShape& shape, MPI_Comm comm) : impl_(std::make_unique<Impl>(shape, comm)) {}
+void Multigrid::Impl::store_complete(std::vector<double>& u) {
+  Level& L = levels[0];
+  if (L.windowed()) {
+    store(u);
+    work.replicate(0, u, false);  // the other ranks' slabs (exact copies)
+  } else {
+    work.replicate(0, L.u, true);
+    store(u);
+  }
+}
+
+Multigrid::Multigrid(const GridShape& shape, MPI_Comm comm, MultigridStorage storage)
+    : impl_(std::make_unique<Impl>(shape, comm, storage)) {}
 Multigrid::~Multigrid() = default;
 Multigrid::Multigrid(Multigrid&&) noexcept = default;
 Multigrid& Multigrid::operator=(Multigrid&&) noexcept = default;
@@ -232,6 +260,11 @@ long long Multigrid::received_bytes() const { return impl_->work.received_bytes(
 long long Multigrid::stored_bytes() const {
   const Impl& m = *impl_;
   std::size_t n = m.frames.J.capacity() * sizeof(Matrix3) + m.frames.f.capacity() * sizeof(Point3);
+  return static_cast<long long>(n) + level_bytes();
+}
+long long Multigrid::level_bytes() const {
+  const Impl& m = *impl_;
+  std::size_t n = 0;
   for (const Level& L : m.levels) n += L.stored_bytes();
   for (const auto& p : m.work.all_parts())
     for (const auto* v : {&p.sbuf, &p.rbuf, &p.gbuf, &p.tsend, &p.trecv}) n += v->capacity() * sizeof(double);
@@ -249,8 +282,9 @@ SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, co
   SolveStats st;
   Level& L = m.levels[0];
   // No sources, no boundary values: the solution is zero (no cycles spent on round-off).
+  // (The equation's whole s0, not level 0's: a window's zeros must not decide for every rank.)
   const bool trivial = !eq.dirichlet && eq.far_value == 0.0 && !eq.nonlinear() &&
-                       std::all_of(L.s0.begin(), L.s0.end(), [](double v) { return v == 0.0; });
+                       std::all_of(eq.s0.begin(), eq.s0.end(), [](double v) { return v == 0.0; });
   if (trivial) {
     std::fill(u.begin(), u.end(), 0.0);
     st.converged = true;
@@ -294,8 +328,7 @@ SolveStats Multigrid::solve(const ScalarEquation& eq, std::vector<double>& u, co
   st.factor = st.cycles > 0 && st.initial_residual > 0 ? std::pow(res / st.initial_residual, 1.0 / st.cycles) : 0.0;
   st.relaxed_cells = m.relaxed_fine, st.relaxed_cells_all = m.relaxed_all;
   st.ghost_entries = m.ghost_entries, st.factored_cells = m.factored_cells, st.restricted_cells = m.restricted_cells;
-  m.work.replicate(0, L.u, true);  // the solution complete on every rank
-  m.store(u);
+  m.store_complete(u);  // the solution complete on every rank
   return st;
 }
 
@@ -308,9 +341,13 @@ double Multigrid::residual_norm(const ScalarEquation& eq, const std::vector<doub
 
 std::vector<double> Multigrid::with_ghosts(const ScalarEquation& eq, const std::vector<double>& u) const {
   const Level& L = impl_->levels[0];
-  std::vector<double> a(L.ghosted_size, 0.0);
-  for_cells(L, full_range(L), [&](std::size_t q, std::ptrdiff_t p) { a[static_cast<std::size_t>(p)] = u[q]; });
-  fill_ghosts(L, eq, a, false);
+  const GridShape& s = L.shape;
+  std::vector<double> a(L.ghosted_size, 0.0);  // the whole level: global offsets
+  std::size_t q = 0;
+  for (int k = 0; k < s.n[2]; ++k)
+    for (int j = 0; j < s.n[1]; ++j)
+      for (int i = 0; i < s.n[0]; ++i) a[static_cast<std::size_t>(L.global_at(i, j, k))] = u[q++];
+  fill_ghosts(L, eq, a, false, GhostBox{}, 0);
   return a;
 }
 
@@ -321,16 +358,15 @@ void Multigrid::cycle(const ScalarEquation& eq, std::vector<double>& u, const st
   Impl& m = *impl_;
   Level& L = m.levels[0];
   m.load(u);
-  L.f.assign(f.begin(), f.end());
+  m.copy_window(f, L.f);
   const bool line_solve = s.direct_1d && L.shape.dimension == 1;
   m.set_coarse_equations(eq, line_solve);
   if (line_solve) m.smooth_lines(0, eq, 0);
   else m.vcycle(0, eq, s);
-  m.work.replicate(0, L.u, true);
-  m.store(u);
+  m.store_complete(u);
 }
 
-std::ptrdiff_t Multigrid::ghosted_index(int i, int j, int k) const { return impl_->levels[0].at(i, j, k); }
+std::ptrdiff_t Multigrid::ghosted_index(int i, int j, int k) const { return impl_->levels[0].global_at(i, j, k); }
 std::array<std::ptrdiff_t, 3> Multigrid::ghosted_strides() const { return impl_->levels[0].st; }
 const CellFrames& Multigrid::frames() const { return impl_->frames; }
 

@@ -76,14 +76,19 @@ void Multigrid::Impl::vcycle(std::size_t l, const ScalarEquation& eq, const Solv
   Level& C = levels[l + 1];
   relax(l, eq, s.pre_sweeps);
   residual(l, eq);
-  // A coarse level computed by every rank needs the whole fine level on every rank.
-  if (!work.part(l + 1).dist) work.replicate(l, F.u, true), work.replicate(l, F.r, false);
-  const Range RF = work.part(l + 1).dist ? work.range(l) : work.full(l), RC = work.range(l + 1);
-  restrict_ghosted(F, C, F.u, C.u, RF, RC);
+  // A coarse level computed by every rank needs the whole fine level on every rank; with
+  // distributed storage each rank restricts its slab into it instead and the rest is gathered.
+  const bool agg = work.part(l + 1).agglomerated;
+  if (!work.part(l + 1).dist && !agg) work.replicate(l, F.u, true), work.replicate(l, F.r, false);
+  const Range RF = work.part(l + 1).dist || agg ? work.range(l) : work.full(l), RC = work.range(l + 1);
+  const Range RR = work.restricted_range(l + 1);  // RC, or the agglomerated level's planes under RF
+  restrict_ghosted(F, C, F.u, C.u, RF, RR);
+  work.agglomerate(l + 1, C.u, true);
   work.halo(l + 1, C.u);
   count_fill(C, eq, C.u, false, rows_box(l + 1));
   C.ubar = C.u;
-  restrict_interior(F, C, F.r, C.f, RF, RC);
+  restrict_interior(F, C, F.r, C.f, RF, RR);
+  work.agglomerate(l + 1, C.f, false);
   apply_operator(C, C.ubar, C.r, RC);  // C.r as scratch: the coarse cycle recomputes it before use
   for_cells(C, RC, [&](std::size_t q, std::ptrdiff_t) { C.f[q] += C.r[q]; });
   // 2D: the lines along the split direction read f across all slabs.
@@ -91,8 +96,8 @@ void Multigrid::Impl::vcycle(std::size_t l, const ScalarEquation& eq, const Solv
   vcycle(l + 1, eq, s);
   // The correction on the owned planes (all of a level that is not split), then its halos.
   const auto& pc = work.part(l + 1);
-  const std::size_t p0 = pc.dist ? static_cast<std::size_t>((pc.lo + 1) * pc.plane) : 0;
-  const std::size_t p1 = pc.dist ? static_cast<std::size_t>((pc.hi + 1) * pc.plane) : C.u.size();
+  const std::size_t p0 = pc.dist ? static_cast<std::size_t>((pc.lo + 1) * pc.plane - pc.gbase) : 0;
+  const std::size_t p1 = pc.dist ? static_cast<std::size_t>((pc.hi + 1) * pc.plane - pc.gbase) : C.u.size();
   for (std::size_t p = p0; p < p1; ++p) C.ubar[p] = C.u[p] - C.ubar[p];
   work.halo(l + 1, C.ubar);
   count_fill(C, eq, C.ubar, true, rows_box(l + 1));
@@ -102,9 +107,14 @@ void Multigrid::Impl::vcycle(std::size_t l, const ScalarEquation& eq, const Solv
 
 void Multigrid::Impl::full_multigrid(const ScalarEquation& eq, const SolveSettings& s) {
   set_coarse_equations(eq);
-  // The initial guess down the hierarchy by every rank (the finest level is complete).
-  for (std::size_t l = 0; l + 1 < levels.size(); ++l)
-    restrict_ghosted(levels[l], levels[l + 1], levels[l].u, levels[l + 1].u, work.full(l), work.full(l + 1));
+  // The initial guess down the hierarchy by every rank (the finest level is complete), or with
+  // distributed storage by each rank on its slabs (the level below them agglomerated).
+  for (std::size_t l = 0; l + 1 < levels.size(); ++l) {
+    const bool own = work.part(l).windowed;
+    restrict_ghosted(levels[l], levels[l + 1], levels[l].u, levels[l + 1].u, own ? work.range(l) : work.full(l),
+                     own ? work.restricted_range(l + 1) : work.full(l + 1));
+    work.agglomerate(l + 1, levels[l + 1].u, true);
+  }
   for (auto& L : levels) std::fill(L.f.begin(), L.f.end(), 0.0);
   coarse_solve(levels.size() - 1, eq, std::max(s.coarse_sweeps, 20 * static_cast<int>(levels.back().cells())));
   for (std::size_t l = levels.size() - 1; l-- > 0;) {
@@ -114,7 +124,7 @@ void Multigrid::Impl::full_multigrid(const ScalarEquation& eq, const SolveSettin
     for (std::size_t m = l; m < levels.size(); ++m) std::fill(levels[m].f.begin(), levels[m].f.end(), 0.0);
     vcycle(l, eq, s);
   }
-  work.replicate(0, levels[0].u, true);
+  if (!work.part(0).windowed) work.replicate(0, levels[0].u, true);
 }
 
 }  // namespace remnant::xcfc

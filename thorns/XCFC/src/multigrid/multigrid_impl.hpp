@@ -25,7 +25,7 @@ struct Multigrid::Impl {
   long long ghost_entries = 0, factored_cells = 0, restricted_cells = 0;  // and its other cell work
 
   // The level hierarchy of a grid, the restriction weights and the MPI split.
-  Impl(const GridShape& shape, MPI_Comm c);
+  Impl(const GridShape& shape, MPI_Comm c, MultigridStorage storage);
   Impl(const Impl&) = delete;
   Impl& operator=(const Impl&) = delete;
 
@@ -114,8 +114,13 @@ struct Multigrid::Impl {
   // max |a| over a ghosted array of level l, each rank reading its own planes (the same value).
   double max_abs_owned(std::size_t l, const std::vector<double>& a) const;
 
+  // Between the interface's whole interior arrays and level 0 (its window when distributed).
   void load(const std::vector<double>& u);
   void store(std::vector<double>& u) const;
+  // The finest level's solution into u, complete on every rank.
+  void store_complete(std::vector<double>& u);
+  // The window of level 0's interior cells out of a whole interior array.
+  void copy_window(const std::vector<double>& whole, std::vector<double>& out) const;
 };
 
 }  // namespace remnant::xcfc

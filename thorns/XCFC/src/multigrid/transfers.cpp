@@ -6,7 +6,7 @@ namespace remnant::xcfc {
 
 void restrict_interior(const Level& F, const Level& C, const std::vector<double>& fine, std::vector<double>& coarse,
                        const Range& RF, const Range& RC) {
-  coarse.assign(C.cells(), 0.0);
+  coarse.assign(C.stored_cells, 0.0);
   const GridShape& s = F.shape;
   for (int k = RF.k0; k < RF.k1; ++k)
     for (int j = RF.j0; j < RF.j1; ++j)
@@ -18,7 +18,7 @@ void restrict_interior(const Level& F, const Level& C, const std::vector<double>
 }
 void restrict_ghosted(const Level& F, const Level& C, const std::vector<double>& fine, std::vector<double>& coarse,
                       const Range& RF, const Range& RC) {
-  coarse.assign(C.ghosted_size, 0.0);
+  coarse.assign(C.stored_ghosted, 0.0);
   const GridShape& s = F.shape;
   for (int k = RF.k0; k < RF.k1; ++k)
     for (int j = RF.j0; j < RF.j1; ++j)

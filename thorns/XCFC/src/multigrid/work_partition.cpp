@@ -1,6 +1,7 @@
 #include "work_partition.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "remnant/comm_counters.hpp"
 
@@ -26,6 +27,26 @@ Range WorkPartition::range(std::size_t l) const {
   return r;
 }
 
+Range WorkPartition::restricted_range(std::size_t l) const {
+  const Part& p = parts[l];
+  if (!p.agglomerated) return range(l);
+  Range r = full(l);
+  (p.s == 2 ? r.k0 : r.j0) = p.agg_lo, (p.s == 2 ? r.k1 : r.j1) = p.agg_hi;
+  return r;
+}
+
+void WorkPartition::agglomerate(std::size_t l, std::vector<double>& a, bool ghosted) const {
+  const Part& p = parts[l];
+  if (!p.agglomerated) return;
+  const auto& c = ghosted ? p.agg_gcounts : p.agg_counts;
+  MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, a.data(), c.data(), ghosted ? p.agg_gdispls.data() : p.agg_displs.data(),
+                 MPI_DOUBLE, comm);
+  long long n = 0;
+  for (int r = 0; r < nranks_; ++r) n += r == rank_ ? 0 : c[static_cast<std::size_t>(r)];
+  received_ += static_cast<long long>(sizeof(double)) * n;
+  comm::count("mg_base_allgather", comm::Pattern::allgather, static_cast<int>(l), 1, static_cast<long long>(sizeof(double)) * n);
+}
+
 bool WorkPartition::splittable(const GridShape& s) const {
   // 3D cylindrical and spherical levels are computed whole by every rank: their periodic and
   // axis images (phi + pi) lie on other ranks' slabs.
@@ -48,7 +69,7 @@ std::vector<int> WorkPartition::line_cuts(int n0, int extra) const {
   return c;
 }
 
-void WorkPartition::build(const std::vector<Level>& levels, const std::vector<int>& rank0_extra) {
+void WorkPartition::build(const std::vector<Level>& levels, const std::vector<int>& rank0_extra, bool distributed_storage) {
   lv = &levels;
   parts.assign(lv->size(), Part{});
   for (std::size_t l = 0; l < lv->size(); ++l) {
@@ -64,8 +85,24 @@ void WorkPartition::build(const std::vector<Level>& levels, const std::vector<in
   const int sd = (*lv)[0].shape.dimension - 1;
   const auto P = static_cast<std::size_t>(nranks_);
   std::vector<int> b(P + 1);
+  const bool windowed = distributed_storage && sd == 2;
+  // Windowed: cuts on multiples of the coarsening ratio below the split (splittable: n >= 2P).
+  const int unit = windowed && D < lv->size() ? (*lv)[D - 1].ratio[sd] : 1;
   for (std::size_t r = 0; r <= P; ++r)
-    b[r] = static_cast<int>(static_cast<long long>(r) * (*lv)[D - 1].shape.n[sd] / nranks_);
+    b[r] = unit * static_cast<int>(static_cast<long long>(r) * ((*lv)[D - 1].shape.n[sd] / unit) / nranks_);
+  if (windowed && D < lv->size()) {  // the level below the split, restricted into by every rank
+    Part& a = parts[D];
+    const GridShape& sh = (*lv)[D].shape;
+    const std::ptrdiff_t plane = (*lv)[D].st[sd], iplane = static_cast<std::ptrdiff_t>(sh.n[0]) * sh.n[1];
+    a.agglomerated = true;
+    a.agg_lo = b[static_cast<std::size_t>(rank_)] / unit, a.agg_hi = b[static_cast<std::size_t>(rank_) + 1] / unit;
+    for (auto* v : {&a.agg_counts, &a.agg_displs, &a.agg_gcounts, &a.agg_gdispls}) v->assign(P, 0);
+    for (std::size_t r = 0; r < P; ++r) {
+      const int k0 = b[r] / unit, planes = b[r + 1] / unit - k0;
+      a.agg_counts[r] = static_cast<int>(planes * iplane), a.agg_displs[r] = static_cast<int>(k0 * iplane);
+      a.agg_gcounts[r] = static_cast<int>(planes * plane), a.agg_gdispls[r] = static_cast<int>((k0 + 1) * plane);
+    }
+  }
   for (std::size_t l = D; l-- > 0;) {
     if (l + 1 < D)
       for (int& x : b) x *= (*lv)[l].ratio[sd];
@@ -76,6 +113,8 @@ void WorkPartition::build(const std::vector<Level>& levels, const std::vector<in
     p.lo = b[static_cast<std::size_t>(rank_)], p.hi = b[static_cast<std::size_t>(rank_) + 1];
     p.flip = sh.dimension == 2 && sh.boundary[0][0] == Boundary::origin && sh.origin_flips_theta();
     p.plane = L.st[sd];
+    p.windowed = windowed;
+    p.gbase = windowed ? static_cast<std::ptrdiff_t>(p.lo) * p.plane : 0;  // Level::set_window's
     p.iplane = sd == 2 ? static_cast<std::ptrdiff_t>(sh.n[0]) * sh.n[1] : sh.n[0];
     for (auto* v :
          {&p.counts, &p.displs, &p.icounts, &p.idispls, &p.col_counts, &p.col_displs, &p.blk_counts, &p.blk_displs})
@@ -237,6 +276,9 @@ double WorkPartition::global_max(double m) const {
 void WorkPartition::replicate(std::size_t l, std::vector<double>& a, bool ghosted) const {
   const Part& p = parts[l];
   if (!p.dist) return;
+  const Level& L = (*lv)[l];
+  if (a.size() != (ghosted ? L.ghosted_size : L.cells()))  // a window has nothing to complete
+    throw std::logic_error("WorkPartition::replicate: not an array of the whole level");
   MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DATATYPE_NULL, a.data(), ghosted ? p.counts.data() : p.icounts.data(),
                  ghosted ? p.displs.data() : p.idispls.data(), MPI_DOUBLE, comm);
   const auto& c = ghosted ? p.counts : p.icounts;
@@ -250,7 +292,7 @@ void WorkPartition::halo(std::size_t l, std::vector<double>& a) {
   if (!p.dist) return;
   double* v = a.data();
   const int w = static_cast<int>(p.plane);
-  auto plane = [&](int k) { return v + (k + 1) * p.plane; };
+  auto plane = [&](int k) { return v + ((k + 1) * p.plane - p.gbase); };
   MPI_Sendrecv(plane(p.hi - 1), w, MPI_DOUBLE, neighbour(1), 11, plane(p.lo - 1), w, MPI_DOUBLE, neighbour(-1), 11,
                comm, MPI_STATUS_IGNORE);
   MPI_Sendrecv(plane(p.lo), w, MPI_DOUBLE, neighbour(-1), 12, plane(p.hi), w, MPI_DOUBLE, neighbour(1), 12, comm,

@@ -1,6 +1,9 @@
 #pragma once
-// The MPI work partition of a multigrid hierarchy. Arrays are complete on every rank, only the
-// work is split: each level of dimension >= 2 that is large enough is cut in slabs of planes along
+// The MPI work partition of a multigrid hierarchy. By default arrays are complete on every rank
+// and only the work is split; with distributed storage (3D levels) a split level's arrays hold only
+// the owned slab and its halo planes (Level::set_window), and the first level below the split is
+// agglomerated: every rank restricts its own slab into it and MPI_Allgatherv completes it. The work
+// is split the same way in both: each level of dimension >= 2 that is large enough is cut in slabs of planes along
 // its last used direction (k in 3D, j in 2D); a rank computes its own planes and keeps one halo
 // plane on each side current (MPI_Sendrecv) before every stencil operation. Smaller (coarser)
 // levels are computed by every rank redundantly, from inputs made complete by MPI_Allgatherv.
@@ -32,6 +35,14 @@ class WorkPartition {
     std::vector<int> cols, tc_s, tc_sd, tc_r, tc_rd, ts_s, ts_sd, ts_r, ts_rd;
     std::vector<double> tsend, trecv;
     std::vector<int> root_counts, root_displs;  // columns_to_root layout (rows per rank times ncols)
+    // Distributed storage: this split level's arrays hold only its window (ghosted offset gbase).
+    bool windowed = false;
+    std::ptrdiff_t gbase = 0;
+    // The first level below a windowed split: each rank restricts into the planes [agg_lo, agg_hi)
+    // under its fine slab; MPI_Allgatherv layouts of those planes in interior and ghosted arrays.
+    bool agglomerated = false;
+    int agg_lo = 0, agg_hi = 0;
+    std::vector<int> agg_counts, agg_displs, agg_gcounts, agg_gdispls;
   };
   // Below this a level is not split: the halo messages would cost more than the work saved.
   static constexpr std::size_t kMinCells = 1024;
@@ -44,13 +55,20 @@ class WorkPartition {
   // Partitions a hierarchy (kept by reference: it must outlive this and not reallocate).
   // rank0_extra[l]: lines along the split direction that rank 0 relaxes alone on level l (the
   // origin shells' extra passes); the 2D line split gives rank 0 that many fewer columns.
-  void build(const std::vector<Level>& levels, const std::vector<int>& rank0_extra = {});
+  // distributed_storage: 3D split levels keep only their slabs (the coarsest split level's cuts
+  // then fall on even planes, so that each cell of the level below is restricted by one rank).
+  void build(const std::vector<Level>& levels, const std::vector<int>& rank0_extra = {}, bool distributed_storage = false);
   const Part& part(std::size_t l) const { return parts[l]; }
   const std::vector<Part>& all_parts() const { return parts; }
   int rank() const { return rank_; }
   int nranks() const { return nranks_; }
   // The interior cells this rank works on (all of a level that is not split).
   Range range(std::size_t l) const;
+  // The cells of an agglomerated level this rank restricts into (all of any other level that is
+  // not split; range(l) of a split one).
+  Range restricted_range(std::size_t l) const;
+  // An agglomerated level's array complete on every rank from each rank's restricted planes.
+  void agglomerate(std::size_t l, std::vector<double>& a, bool ghosted) const;
   Range full(std::size_t l) const { return full_range((*lv)[l]); }
 
   double global_max(double m) const;

@@ -95,9 +95,12 @@ inline void for_part_cells(const PartGeometry& g, std::size_t begin, std::size_t
 class CompositeMultigrid {
  public:
   // Throws std::invalid_argument for a layout that breaks the rules above.
-  explicit CompositeMultigrid(const CompositeLayout& layout, MPI_Comm comm = MPI_COMM_SELF);
+  // storage: the base grid's (Multigrid's) level storage on several ranks.
+  explicit CompositeMultigrid(const CompositeLayout& layout, MPI_Comm comm = MPI_COMM_SELF,
+                              MultigridStorage storage = MultigridStorage::replicated);
   // A uniform grid: the base level only (every solve is Multigrid's, bit for bit).
-  explicit CompositeMultigrid(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF);
+  explicit CompositeMultigrid(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF,
+                              MultigridStorage storage = MultigridStorage::replicated);
   ~CompositeMultigrid();
   CompositeMultigrid(CompositeMultigrid&&) noexcept;
   CompositeMultigrid& operator=(CompositeMultigrid&&) noexcept;

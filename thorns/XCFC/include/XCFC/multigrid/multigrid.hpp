@@ -8,8 +8,9 @@
 // local Newton step per cell, V-cycles on levels coarsened 2:1 per direction while the cell count is
 // even (semi-coarsening once a direction is exhausted), full multigrid from the coarsest level,
 // convergence on the L-infinity norm of the residual relative to the L-infinity norm of the sources.
-// With a communicator of several ranks the cycles' work is split in slabs between the ranks (arrays
-// stay complete on every rank; see README.md, "MPI and AMR"), bit-identical to one rank.
+// With a communicator of several ranks the cycles' work is split in slabs between the ranks
+// (arrays complete on every rank, or with Storage::distributed only the own slabs of 3D levels; see
+// README.md, "MPI and AMR"), bit-identical to one rank.
 #include <mpi.h>
 
 #include <functional>
@@ -70,10 +71,17 @@ struct CellFrames {
   std::vector<Point3> f;
 };
 
+// Where the levels' arrays live on several ranks: replicated (every rank holds every level whole,
+// only the work is split) or distributed (3D levels split in slabs hold only the own slab and one
+// halo plane each side; the first level below the split is agglomerated on every rank). The
+// interface's arrays (u, the equation, frames) are whole on every rank in both.
+enum class MultigridStorage { replicated, distributed };
+
 class Multigrid {
  public:
   // comm: the ranks sharing the work (every rank calls solve with the same arguments).
-  explicit Multigrid(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF);
+  explicit Multigrid(const GridShape& shape, MPI_Comm comm = MPI_COMM_SELF,
+                     MultigridStorage storage = MultigridStorage::replicated);
   ~Multigrid();
   Multigrid(Multigrid&&) noexcept;
   Multigrid& operator=(Multigrid&&) noexcept;
@@ -88,6 +96,8 @@ class Multigrid {
   long long received_bytes() const;
   // Bytes of the arrays this rank holds for the hierarchy (capacity of the level arrays).
   long long stored_bytes() const;
+  // The part of stored_bytes() held by the levels alone (without the finest level's cell frames).
+  long long level_bytes() const;
   // Solves in place: u holds the initial guess (warm start) and returns the solution.
   SolveStats solve(const ScalarEquation& eq, std::vector<double>& u, const SolveSettings& s);
   // Max-norm residual of the finest-level discrete equation.
