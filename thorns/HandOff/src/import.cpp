@@ -150,6 +150,20 @@ CellSample sample_cell(const Sampler& s, const TargetDomain& t, const Block& b, 
   return c;
 }
 
+// The first-guess velocity as a physical state (v^2 < 1 with the cell's psi^4): averages over phi
+// and the cubic interpolation of v^i where fast ejecta meet the atmosphere can reach v^2 >= 1
+// (HydroBase_InitialCons then writes NaN). Only the guess is capped (at W = 10): the imported
+// conserved variables decide the recovered velocity.
+void cap_guess_velocity(CoordinateSystem cs, const Point3& x, double psi4, double (&vel)[3]) {
+  constexpr double kMaxV2 = 0.99;
+  const Point3 f = coords::metric_diagonal(cs, x);
+  double v2 = 0;
+  for (std::size_t a = 0; a < 3; ++a) v2 += psi4 * f[a] * vel[a] * vel[a];
+  if (!(v2 > kMaxV2)) return;
+  const double scale = std::sqrt(kMaxV2 / v2);
+  for (double& v : vel) v *= scale;
+}
+
 }  // namespace
 
 void check_parameters(Context& ctx) {
@@ -212,7 +226,9 @@ void initial(Context& ctx) {
       // Primitives and metric: the first guess; XCFC re-solves the metric from the conserved
       // variables and HydroBase recovers the primitives with it.
       prim.rho(i, j, k) = c.rho;
-      for (int a = 0; a < 3; ++a) prim.vel(a, i, j, k) = c.vel[a];
+      double vel[3] = {c.vel[0], c.vel[1], c.vel[2]};
+      cap_guess_velocity(cs, x, c.hits && c.gamma13 > 0 ? c.gamma13 : 1.0, vel);
+      for (int a = 0; a < 3; ++a) prim.vel(a, i, j, k) = vel[a];
       prim.eps(i, j, k) = c.eps;
       prim.Ye(i, j, k) = c.cons[0] > 0 ? c.cons[5] / c.cons[0] : ye_default;
       prim.press(i, j, k) = 0.0, prim.temperature(i, j, k) = 0.0, prim.W(i, j, k) = 1.0, prim.cs2(i, j, k) = 0.0;

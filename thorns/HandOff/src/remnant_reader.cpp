@@ -5,6 +5,24 @@
 #include "remnant/error.hpp"
 
 namespace remnant::handoff {
+namespace {
+
+// A block's data on the next coarser level (x fastest): the 2^3-cell means (conserved variables and
+// the metric, as the run's restriction), or the lowest child's value (primitives: the mean of p
+// is not p_EOS of the means, and HandOff checks the data's p against the EOS).
+std::vector<double> restrict_block(const std::vector<double>& v, const std::array<int, 3>& n, bool mean) {
+  const std::array<int, 3> m{n[0] / 2, n[1] / 2, n[2] / 2};
+  std::vector<double> out(static_cast<std::size_t>(m[0]) * static_cast<std::size_t>(m[1]) * static_cast<std::size_t>(m[2]), 0.0);
+  for (int k = 0; k < 2 * m[2]; ++k)
+    for (int j = 0; j < 2 * m[1]; ++j)
+      for (int i = 0; i < 2 * m[0]; ++i)
+        if (mean || (i % 2 == 0 && j % 2 == 0 && k % 2 == 0))
+          out[static_cast<std::size_t>(i / 2 + m[0] * (j / 2 + m[1] * (k / 2)))] +=
+              (mean ? 0.125 : 1.0) * v[static_cast<std::size_t>(i + n[0] * (j + n[1] * k))];
+  return out;
+}
+
+}  // namespace
 
 SourceData read_remnant_volume(const std::vector<std::string>& files, std::array<bool, 3> reflection, bool axial_magnetic_field) {
   if (files.size() != 1)
@@ -39,15 +57,17 @@ SourceData read_remnant_volume(const std::vector<std::string>& files, std::array
     const char* dataset;
     const char* field;
     bool required;
+    bool mean = false;  // restricted to coarser levels as 2^3 means (else a child's value)
   };
   static const Map maps[] = {
       {"HydroBase-prim.rho", "rho", true},     {"HydroBase-prim.eps", "eps", true},       {"HydroBase-prim.press", "press", false},
       {"HydroBase-prim.Ye", "Ye", false},      {"HydroBase-prim.temperature", "temperature", false},
       {"HydroBase-prim.vel1", "vel[0]", true}, {"HydroBase-prim.vel2", "vel[1]", true},   {"HydroBase-prim.vel3", "vel[2]", true},
-      {"HydroBase-cons.D", "Dt", true},        {"HydroBase-cons.S1", "St[0]", true},      {"HydroBase-cons.S2", "St[1]", true},
-      {"HydroBase-cons.S3", "St[2]", true},    {"HydroBase-cons.tau", "taut", true},      {"HydroBase-cons.DYe", "DYet", true},
-      {"Spacetime-metric.psi", "psi", true},   {"Spacetime-metric.alpha", "alp", false},
-      {"HydroBase-Bvec.B1", "Bvec[0]", false}, {"HydroBase-Bvec.B2", "Bvec[1]", false},  {"HydroBase-Bvec.B3", "Bvec[2]", false}};
+      {"HydroBase-cons.D", "Dt", true, true},        {"HydroBase-cons.S1", "St[0]", true, true},      {"HydroBase-cons.S2", "St[1]", true, true},
+      {"HydroBase-cons.S3", "St[2]", true, true},    {"HydroBase-cons.tau", "taut", true, true},      {"HydroBase-cons.DYe", "DYet", true, true},
+      {"Spacetime-metric.psi", "psi", true, true},   {"Spacetime-metric.alpha", "alp", false, true},
+      {"HydroBase-Bvec.B1", "Bvec[0]", false, true}, {"HydroBase-Bvec.B2", "Bvec[1]", false, true},
+      {"HydroBase-Bvec.B3", "Bvec[2]", false, true}};
   LevelBuilder builder(reflection, 0, axial_magnetic_field);
   const std::size_t nb = level.size(), per = static_cast<std::size_t>(cells[0] * cells[1] * cells[2]);
   for (const auto& m : maps) {
@@ -69,8 +89,25 @@ SourceData read_remnant_volume(const std::vector<std::string>& files, std::array
         c.n[a] = static_cast<int>(cells[a]);
       }
       c.where = path + ": block " + std::to_string(b);
-      builder.add(m.field, std::move(c), std::vector<double>(values.begin() + static_cast<std::ptrdiff_t>(b * per),
-                                                              values.begin() + static_cast<std::ptrdiff_t>((b + 1) * per)));
+      std::vector<double> v(values.begin() + static_cast<std::ptrdiff_t>(b * per), values.begin() + static_cast<std::ptrdiff_t>((b + 1) * per));
+      // The file holds the mesh's leaves only: a coarser level has no points under a finer block,
+      // so between a fine block's outermost centres and the coarse ones (half a spacing of each)
+      // neither level could interpolate (the cells there got no data). The block's restriction
+      // (2^3 means, as the run's own restriction) fills the coarser levels beneath it; the
+      // integrals count each point on its finest level only (owned_by_finer).
+      Component coarse = c;
+      std::vector<double> cv = v;
+      builder.add(m.field, std::move(c), std::move(v));
+      while (coarse.level > 0 && coarse.n[0] % 2 == 0 && coarse.n[1] % 2 == 0 && coarse.n[2] % 2 == 0) {
+        cv = restrict_block(cv, coarse.n, m.mean);
+        coarse.level -= 1;
+        for (std::size_t a = 0; a < 3; ++a) {
+          coarse.origin[a] += 0.5 * coarse.delta[a];  // the first coarse centre: the corner of two fine cells
+          coarse.delta[a] *= 2, coarse.n[a] /= 2;
+        }
+        coarse.where = path + ": block " + std::to_string(b) + " restricted to level " + std::to_string(coarse.level);
+        builder.add(m.field, coarse, cv);
+      }
     }
   }
   out.levels = builder.build();

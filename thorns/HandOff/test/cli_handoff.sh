@@ -2,7 +2,9 @@
 # End to end on the command line: remnant-handoff-testdata writes BU0 as 3D Carpet data, remnant runs
 # parfiles/handoff_tov_cyl_2d.yaml on it (hand-off only), the report and the profiles are written,
 # and utils/plot_handoff reads the profiles; the report's 3D rest mass equals tools/carpet_check.py's
-# independent sum over the files to 1e-12; a wrong file pattern fails with a message naming it.
+# independent sum over the files to 1e-12; a wrong file pattern fails with a message naming it;
+# utils/handoff_evolution summarises a short evolution; parfiles/headon_handoff_cyl_2d.yaml asks for
+# its file.
 # usage: cli_handoff.sh REMNANT_EXE TESTDATA_EXE SOURCE_DIR
 set -u
 exe=$1 tool=$2 src=$3
@@ -32,4 +34,15 @@ if "$exe" "$src/parfiles/handoff_tov_cyl_2d.yaml" MoL::final_time=0 Flesh::out_d
   fail "a pattern that matches nothing did not fail"
 fi
 grep -q "nowhere/\*.h5" bad.log || fail "the error does not name the pattern: $(tail -3 bad.log)"
+# A few steps after the hand-off, summarised by utils/handoff_evolution (report and analysis.tsv).
+"$exe" "$src/parfiles/handoff_tov_cyl_2d.yaml" MoL::final_time=5 Analysis::every=2 Flesh::out_dir=evol > evol.log 2>&1 ||
+  fail "the short evolution failed: $(tail -5 evol.log)"
+python3 "$src/utils/handoff_evolution" --every 1 evol > summary.log 2>&1 || fail "handoff_evolution: $(cat summary.log)"
+grep -q "^hand-off: 3D rest mass on the grid" summary.log && grep -q "^rest mass + outflow - atmosphere source" summary.log &&
+  grep -q "max |rho_c/rho_c(0) - 1|" summary.log || fail "handoff_evolution: $(cat summary.log)"
+# The head-on hand-off parfile is complete but for the file, which the user names.
+if "$exe" "$src/parfiles/headon_handoff_cyl_2d.yaml" EOS::type=ideal_gas Flesh::out_dir=out3 > headon.log 2>&1; then
+  fail "parfiles/headon_handoff_cyl_2d.yaml ran without HandOff::files"
+fi
+grep -q "headon_handoff_cyl_2d.yaml:.*HandOff::files is empty" headon.log || fail "no HandOff::files error: $(tail -3 headon.log)"
 echo "ok: $(grep '^normalisation' out/handoff_report.txt); 3D rest mass ${m_cpp:-} (carpet_check.py ${m_py:-skipped})"
