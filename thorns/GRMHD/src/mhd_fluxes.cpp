@@ -114,6 +114,10 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
         if (reconstructed_slot<E>(q)) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
       if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, UnitStride{}, L);
       else set_face_metric(b, trig, s.metric_faces, D, idx, n, src, base, stride, L);
+      if constexpr (reconstructs_pressure<E>)
+        if (s.well_balanced)
+          well_balanced_faces(IdealIsentrope{eos.gamma()}, s.reconstruction, s.metric_faces,
+                              src.met[Metric::idx::alpha] + base, stride, n, ng, L);
 
       Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
       // The face field is the sqrt(f)-weighted face mean of B^d; the face states need the point value
