@@ -15,6 +15,8 @@
 #include "EOS/ideal_gas.hpp"
 #include "kernel_block.hpp"
 #include "mhd_fluxes.hpp"
+#include "mhd_run.hpp"
+#include "remnant/error.hpp"
 #include "remnant/cell_geometry.hpp"
 #include "remnant/coordinates.hpp"
 #include "rhs.hpp"
@@ -137,3 +139,22 @@ void expect_exact(const Setup& st, const char* name) {
 TEST(WellBalanced, CylindricalIsentropicEquilibriumIsExact) { expect_exact(kCylindrical, "cylindrical"); }
 TEST(WellBalanced, SphericalIsentropicEquilibriumIsExact) { expect_exact(kSpherical, "spherical"); }
 TEST(WellBalanced, CartesianIsentropicEquilibriumIsExact) { expect_exact(kCartesian, "Cartesian"); }
+
+// The isentrope is the ideal gas's: another EOS is refused before the first step, naming the parameter.
+TEST(WellBalanced, NeedsTheIdealGas) {
+  const std::string grid = "dimension: 1, ncells: [16, 1, 1], block_size: [16, 1, 1], xmin: [0, 0, 0], "
+                           "xmax: [1, 1, 1], ghost_zones: 3";
+  std::string par = test::mhd_parfile(grid, "reconstruction: ppm_ep, initial_data: shock_tube, well_balanced: isentropic",
+                                      "cfl: 0.4, max_iterations: 1");
+  const std::size_t at = par.find("type: ideal_gas");
+  ASSERT_NE(at, std::string::npos);
+  par.replace(at, 15, "type: polytrope");
+  try {
+    test::MhdRun run(par);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("GRMHD::well_balanced = isentropic needs EOS::type = ideal_gas"), std::string::npos) << m;
+    EXPECT_NE(m.find("run.yaml:"), std::string::npos) << m;
+  }
+}
