@@ -104,6 +104,10 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
         }
       }
       reconstruct_line<D, E>(s, b, trig, idx, n, src, base, fields.stride, L);
+      if constexpr (reconstructs_pressure<E>)
+        if (s.well_balanced)
+          well_balanced_faces(IdealIsentrope{eos.gamma()}, s.reconstruction, s.metric_faces,
+                              src.met[Metric::idx::alpha] + base, fields.stride, n, ng, L);
 
       Point3 x = cell_point(b, idx[0], idx[1], idx[2]);
       // The face field is the sqrt(f)-weighted face mean of B^d; the face states need the point value

@@ -1,5 +1,6 @@
 // GRMHD: binds the scheduled functions of thorn.yaml.
 #include <algorithm>
+#include <type_traits>
 
 #include "EOS/eos.hpp"
 #include "HydroBase/magnetic_field.hpp"
@@ -25,7 +26,22 @@ RhsSettings rhs_settings(const Context& ctx) {
   s.metric_faces = ctx.param<std::string>("GRMHD", "metric_face_interpolation") == "cubic"
                        ? MetricFaceInterpolation::cubic
                        : MetricFaceInterpolation::linear;
+  s.well_balanced = ctx.param<std::string>("GRMHD", "well_balanced") == "isentropic";
   return s;
+}
+
+// Pass 2's part of GRMHD::well_balanced: the face metric of the fluxes and the ideal gas's Gamma.
+WellBalancedSources well_balanced_sources(const eos::EOS& eos, const RhsSettings& s) {
+  WellBalancedSources wb;
+  if (!s.well_balanced) return wb;
+  wb.faces = s.metric_faces;
+  eos.visit([&](const auto& e) {
+    if constexpr (reconstructs_pressure<std::decay_t<decltype(e)>>) {
+      wb.on = true;
+      wb.isentrope.gamma = e.gamma();
+    }
+  });
+  return wb;
 }
 
 // A magnetic-field parameter in a run without a field is an input error, not silently ignored.
@@ -48,6 +64,11 @@ void check_field_parameters(const Context& ctx) {
 
 void check_parameters(Context& ctx) {
   check_field_parameters(ctx);
+  if (ctx.param<std::string>("GRMHD", "well_balanced") != "none" && ctx.param<std::string>("EOS", "type") != "ideal_gas")
+    throw InputError(ctx.params().origin("GRMHD", "well_balanced"),
+                     "GRMHD::well_balanced = " + ctx.param<std::string>("GRMHD", "well_balanced") +
+                         " needs EOS::type = ideal_gas (the isentrope in closed form); EOS::type is " +
+                         ctx.param<std::string>("EOS", "type") + ": set GRMHD::well_balanced: none");
   check_positivity_limiter(ctx);
   for (const char* name : {"reconstruction", "emf_reconstruction"}) {
     if (std::string(name) == "emf_reconstruction" && !hydrobase::magnetic_field_evolved(ctx)) continue;
@@ -76,8 +97,9 @@ void calc_rhs(Context& ctx) {
     for (Block* b : ctx.grid().local_blocks()) std::fill(b->data(g.flux[d]), b->data(g.flux[d]) + b->size(g.flux[d]), 0.0);
   ctx.grid().correct_fluxes(faces);
   const DomainCells dom = DomainCells::of(ctx);
+  const WellBalancedSources wb = well_balanced_sources(eos, s);
   for (Block* b : ctx.grid().local_blocks()) {
-    compute_block_rhs(g, *b);
+    compute_block_rhs(g, *b, wb);
     outflow_rhs_block(g, dom, *b);  // the rest mass crossing the domain boundary (mass budget)
   }
 }
@@ -107,9 +129,10 @@ void calc_rhs_mhd(Context& ctx) {
   for (Block* b : ctx.grid().local_blocks()) edge_emfs(scheme, mg, g, *b, edge_rec);
   ctx.grid().correct_edges(mg.emf);
   const DomainCells dom = DomainCells::of(ctx);
+  const WellBalancedSources wb = well_balanced_sources(eos, s);
   for (Block* b : ctx.grid().local_blocks()) {
     face_rhs(mg, *b);
-    compute_block_rhs_mhd(g, mg.bvec, *b);
+    compute_block_rhs_mhd(g, mg.bvec, *b, wb);
     outflow_rhs_block(g, dom, *b);
   }
 }

@@ -41,6 +41,10 @@ void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block&
       const std::ptrdiff_t base = fields.cell_offset(idx), fbase = fields.face_offset(idx);
       gather_line<E>(src, nullptr, base, fields.stride, n, ng, L);
       reconstruct_line<D, E>(s, b, trig, idx, n, src, base, fields.stride, L);
+      if constexpr (reconstructs_pressure<E>)
+        if (s.well_balanced)
+          well_balanced_faces(IdealIsentrope{eos.gamma()}, s.reconstruction, s.metric_faces,
+                              src.met[Metric::idx::alpha] + base, fields.stride, n, ng, L);
       hydro_face_fluxes<D>(eos, n, L, line_face_output<D, kNumCons>(out, fbase, fields.flux_stride));
     }
 }
@@ -176,8 +180,37 @@ template <bool Mhd, bool Shift>
 
 // Pass 2 over the cells of a block, i fastest. Mhd: the magnetised sources with the cell-centred
 // field of group `bvec` (B^i, not densitised); the hydro instantiation never touches it.
+// The static pressure part of the momentum source along d of cell o (psi^6 left out, as the sources),
+// replaced by the flux divergence of the cell's own isentropic equilibrium pressure at its two faces
+// (well_balanced.hpp): the correction to add to src[kS1 + d]. Zero where that equilibrium's h - 1 at
+// a face leaves a factor 2 of the cell's (the atmosphere and the surface keep the plain sources).
+inline double well_balanced_correction(const WellBalancedSources& wb, const Field* prim, const Field* met,
+                                       std::ptrdiff_t o, std::ptrdiff_t s, const FluidState& fs, double psi,
+                                       double alpha, double dalpha, double dpsi, double area_minus,
+                                       double area_plus, double volume, bool curvilinear) {
+  const IdealIsentrope& is = wb.isentrope;
+  const double* rho = prim[Prim::idx::rho].origin + o;
+  const double* press = prim[Prim::idx::press].origin + o;
+  const double* lapse = met[Metric::idx::alpha].origin + o;
+  for (int m = -1; m <= 1; ++m)
+    if (!equilibrium_cell(is, wb.faces, rho[m * s], press[m * s], lapse, s, m)) return 0.0;
+  const double q = fs.h * alpha, K = is.entropy(fs.rho, fs.press);
+  const FaceLapsePsi6 fm =
+      cell_face_metric(wb.faces, met[Metric::idx::alpha].origin + o, met[Metric::idx::psi].origin + o, s);
+  double rho_m, p_m, rho_p, p_p;
+  if (!is.state_near(q / fm.alpha_minus, fs.h, K, rho_m, p_m) || !is.state_near(q / fm.alpha_plus, fs.h, K, rho_p, p_p))
+    return 0.0;
+  const double p2 = psi * psi, psi6 = p2 * p2 * p2;
+  const double balanced = (area_plus * (fm.psi6_plus * fm.alpha_plus * p_p) - area_minus * (fm.psi6_minus * fm.alpha_minus * p_m)) /
+                          volume / psi6;
+  double plain = -(fs.rho * fs.h - fs.press) * dalpha + 6.0 * alpha * fs.press * dpsi / psi;
+  if (curvilinear) plain += alpha * fs.press * (area_plus - area_minus) / volume;
+  return balanced - plain;
+}
+
 template <bool Mhd>
-void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_rows = true) {
+void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_rows = true,
+                            const WellBalancedSources& wb = {}) {
   Field prim[Prim::ncomp], met[Metric::ncomp], rhs[kNumCons], flux[3][kNumCons], bf[3];
   if constexpr (Mhd)
     for (int c = 0; c < 3; ++c) bf[c] = b.field(bvec, c);
@@ -212,7 +245,7 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
       shift = bits != 0;
     }
   }
-  const bool cartesian_3d = cartesian_rows && cartesian && used[0] && used[1] && used[2];
+  const bool cartesian_3d = cartesian_rows && !wb.on && cartesian && used[0] && used[1] && used[2];
   const double* ff[3] = {b.face_factors(0), b.face_factors(1), b.face_factors(2)};
   const double* vw[3] = {b.volume_weights(0), b.volume_weights(1), b.volume_weights(2)};
   std::array<std::array<double, 3>, 3> df{};
@@ -309,6 +342,11 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
               }
             }
         }
+        if (wb.on)
+          for (int d = 0; d < 3; ++d)
+            if (used[d])
+              src[kS1 + d] += well_balanced_correction(wb, prim, met, o, st[d], fs, psi, alpha, dm.dalpha[d], dm.dpsi[d],
+                                                       ff[d][id[d]], ff[d][id[d] + 1], vw[d][id[d]], !cartesian);
         const double p2 = psi * psi, psi6 = p2 * p2 * p2;
         rhs[kD].origin[o] = out[kD];
         rhs[kDYe].origin[o] = out[kDYe];
@@ -331,9 +369,13 @@ void compute_block_fluxes(const eos::EOS& eos, const RhsSettings& s, const Group
   eos.visit([&](const auto& e) { block_fluxes(e, s, g, b); });
 }
 
-void compute_block_rhs(const Groups& g, Block& b) { divergence_and_sources<false>(g, b, -1); }
+void compute_block_rhs(const Groups& g, Block& b, const WellBalancedSources& wb) {
+  divergence_and_sources<false>(g, b, -1, true, wb);
+}
 
-void compute_block_rhs_mhd(const Groups& g, int bvec, Block& b) { divergence_and_sources<true>(g, b, bvec); }
+void compute_block_rhs_mhd(const Groups& g, int bvec, Block& b, const WellBalancedSources& wb) {
+  divergence_and_sources<true>(g, b, bvec, true, wb);
+}
 
 void compute_block_rhs_per_cell(const Groups& g, Block& b) { divergence_and_sources<false>(g, b, -1, false); }
 
