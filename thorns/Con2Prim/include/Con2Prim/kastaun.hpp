@@ -234,6 +234,33 @@ class KastaunSolver {
     return true;
   }
 
+  // True when every mu in [a.x, b.x] evaluates with eps clamped by rule 9 (eps_hat(mu) >= eps_high(
+  // rho_hat(mu)) = eps(rho_hat, T_max, Ye)), proven from a and b, both clamped so, without an EOS
+  // call: a root there is never accepted (rule 9 moves the state), so a root scan may skip the
+  // samples in between (root_scan.hpp). With v_hat^2 = mu^2 rbar^2 below v0^2 (uncapped),
+  // eps_hat = W (1 + qbar - mu rbar^2) - 1, where W rises with mu (mu^2 rbar^2 does), qbar falls
+  // (mu chi rises) and mu rbar^2 <= r^2 mu_b chi_a^2 + (r.Bc)^2 mu_b^2 chi_a (1 + chi_a) (chi falls):
+  // a lower bound of eps_hat. rho_hat = D/W falls with mu; between the table's rho nodes
+  // eps_high(rho) is monotonic, so its largest value is a's or b's clamped eps or a node's.
+  bool clamped_high_between(const Eval& a, const Eval& b) const {
+    if constexpr (!kTabulated) return false;
+    constexpr std::uint32_t other = eos::kInvBelowEpsLow | eos::kInvRhoClamped | eos::kInvMaxIter;
+    if (!(a.inv_flags & b.inv_flags & eos::kInvAboveEpsHigh) || ((a.inv_flags | b.inv_flags) & other)) return false;
+    const double mu_a = a.x, mu_b = b.x;
+    const double chi_a = 1 / (1 + mu_a * Bc2_), chi_b = 1 / (1 + mu_b * Bc2_);
+    if (!(mu_b * mu_b * rbar2(mu_b, chi_b) < v0sq_)) return false;  // v_hat^2 capped: W fixed there
+    const double qbar_b = q_ - 0.5 * Bc2_ - 0.5 * mu_b * mu_b * chi_b * chi_b * rperp2_Bc2_;
+    const double mu_rbar2_max = r2_ * mu_b * chi_a * chi_a + rB_ * rB_ * mu_b * mu_b * chi_a * (1 + chi_a);
+    const double X = 1 + qbar_b - mu_rbar2_max;
+    const double eps_hat_min = std::min(a.W * X, b.W * X) - 1;
+    const double ends_max = std::max(a.eps, b.eps);
+    // Round-off of both sides (a few ulps of W X and of the table's exp) well inside this margin.
+    const double margin = 1e-10 * (std::abs(b.W * X) + std::abs(ends_max) + 1);
+    if (!(eps_hat_min > ends_max + margin)) return false;
+    const double nodes_max = thermo_.eps_high_between(a.rho0, b.rho0);
+    return nodes_max == -INFINITY || eps_hat_min > nodes_max + 1e-10 * (std::abs(b.W * X) + std::abs(nodes_max) + 1);
+  }
+
   // For the rescaling of v when v_hat^2 hit v0^2 (done by the pipeline through match_speed_to_W).
   double v0_squared() const { return v0sq_; }
 

@@ -92,6 +92,13 @@ class MasterEos {
     best_x_ = last_x_;
     ln_T_best_ = ln_T_guess_;
   }
+  // The largest rule-9 threshold eps(rho_i, T_max, Ye) at the table's rho nodes strictly between
+  // rho_a and rho_b (inside the table); +inf where unknown (no exact inversion on a table).
+  double eps_high_between(double rho_a, double rho_b) const {
+    if constexpr (kSliced)
+      if (method_ == eos::InversionMethod::exact) return slice_.eps_high_between(rho_a, rho_b);
+    return INFINITY;
+  }
   // The inversion's flags at (rho0, eps0) without counting or moving the guess.
   std::uint32_t inversion_flags(double rho0, double eps0) const {
     double T_guess = T_guess_;

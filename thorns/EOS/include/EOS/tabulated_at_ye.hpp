@@ -72,6 +72,25 @@ class TabulatedAtYe {
     return invert_any(c, target, interval(lnT_guess), r);
   }
 
+  // The largest eps(rho_i, T_max, Ye) over the table's rho nodes strictly between rho_a and rho_b
+  // (-inf: none; one table call per node read). Between nodes ln(eps + shift) at T_max, the rule-9
+  // threshold, is linear in ln rho, so with its values at rho_a and rho_b this bounds it on [rho_a, rho_b].
+  double eps_high_between(double rho_a, double rho_b) const {
+    int ia, ib;
+    double f;
+    locate_rho(std::log(rho_a), ia, f);
+    locate_rho(std::log(rho_b), ib, f);
+    if (ia > ib) std::swap(ia, ib);
+    double le = -Bounds::inf;
+    const std::size_t last = std::size_t(t_.lT.n - 1);
+    for (int i = ia + 1; i <= ib; ++i) {
+      eos_.counter().add();
+      const double* q = slice_ + std::size_t(i) * kThermoStride + last * st_ + kLogEps;
+      le = std::max(le, (1 - fy_) * q[0] + fy_ * q[sy_]);
+    }
+    return le == -Bounds::inf ? le : std::exp(le) - t_.eps_shift;
+  }
+
  private:
   // ln p and ln(eps + shift) at one T node: the bilinear (rho, Ye) combination of the four columns.
   // Both fields sit next to each other in each 64-byte record, so they are read together (one table
