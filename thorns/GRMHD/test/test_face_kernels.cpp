@@ -25,7 +25,7 @@ constexpr int kFaces = 17;  // n = 16 cells: faces 0..16
 
 // Random states and metric on the faces of L; the metric factors (psi, f_ii) are returned for the
 // pointwise reference. Face 0: two equal states at rest with zero pressure and shift (HLL width 0);
-// face 1: a negative reconstructed pressure (clamped to 0).
+// face 1: a negative reconstructed pressure (raised into the band around the EOS pressure).
 template <class L>
 void fill(L& line, int d, std::mt19937_64& rng, std::array<double, kFaces>& psi, std::array<Point3, kFaces>& fd) {
   std::uniform_real_distribution<double> u(0.0, 1.0);

@@ -7,6 +7,11 @@
 // star's rho(r) and Ye(r) have kinks at the table's nodes while p(r) stays smooth (hydrostatic), and
 // the kinked face values put an O(dx) error into p there: an O(1) force in the node's cells that does
 // not converge (issue 20: the SFHo star's drift grew with resolution).
+// The reconstructed p is kept within a factor kFacePressureBand of p(rho_face, T_face, Ye_face): at a
+// kink the two differ by O(dx), far inside the band, but at a stellar surface rho and p are limited
+// independently, so the face's p / rho could exceed both cells' by orders of magnitude: that enthalpy
+// heated the atmosphere next to the surface to eps ~ 1 and v ~ 0.9 (head-on, issue 18: CFL time step
+// 0.51 instead of ~1.7 at dx = 1.5 within 5 steps; 0.8 .. 1.2 with the band, as before issue 20).
 #include <algorithm>
 #include <type_traits>
 
@@ -14,6 +19,8 @@
 #include "GRMHD/valencia.hpp"
 
 namespace remnant::grmhd {
+
+inline constexpr double kFacePressureBand = 1.1;
 
 template <class E>
 struct is_ideal_gas : std::false_type {};
@@ -31,7 +38,7 @@ inline double thermal_variable(double press, double temperature) {
 
 // Fills press, eps, h, cs2 of s from its rho, ye, the reconstructed thermal variable and (not ideal
 // gas) the reconstructed pressure. The error policy after reconstruction: T and Ye are clamped into
-// the EOS range (rules 4, 6, 7), a negative pressure becomes zero.
+// the EOS range (rules 4, 6, 7), the pressure into the band around the EOS's.
 template <class E>
 inline void complete_face_thermo(const E& eos, FluidState& s, double thermal, double press) {
   if constexpr (reconstructs_pressure<E>) {
@@ -48,7 +55,8 @@ inline void complete_face_thermo(const E& eos, FluidState& s, double thermal, do
     const double T = std::clamp(thermal, b.T_min, b.T_max);
     s.ye = std::clamp(s.ye, b.ye_min, b.ye_max);
     const auto th = eos.thermo(s.rho, T, s.ye);
-    s.press = std::max(press, 0.0);
+    const double p_eos = std::max(th.press, 0.0);
+    s.press = std::clamp(press, p_eos / kFacePressureBand, p_eos * kFacePressureBand);
     s.eps = th.eps;
     s.h = 1.0 + th.eps + s.press / s.rho;
     s.cs2 = th.cs2;
