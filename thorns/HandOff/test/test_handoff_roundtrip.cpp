@@ -13,6 +13,8 @@
 #include <span>
 #include <string>
 #include <unistd.h>
+#include <utility>
+#include <vector>
 
 #include "Analysis/star_diagnostics.hpp"
 #include "HandOff/handoff_state.hpp"
@@ -56,14 +58,17 @@ RunResult run(const std::string& parfile, std::vector<std::string> overrides, bo
   return r;
 }
 
-TEST(HandOffRoundTrip, Remnant3DOctantToCylindrical2D) {
+// BU0's 3D octant (handoff_source_tov_3d.yaml with `source_args`) handed to 2D cylindrical
+// (handoff_tov_cyl_2d.yaml); the runs' folder is removed afterwards. Returns {3D run, 2D run}.
+std::pair<RunResult, RunResult> octant_round_trip(const std::string& name, std::vector<std::string> source_args) {
   long pid = static_cast<long>(::getpid());
   MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
-  const auto dir = std::filesystem::temp_directory_path() / ("handoff_roundtrip_" + std::to_string(pid));
-  const RunResult a = run("handoff_source_tov_3d.yaml", {"Flesh::out_dir=" + (dir / "3d").string()}, false);
+  const auto dir = std::filesystem::temp_directory_path() / (name + "_" + std::to_string(pid));
+  source_args.insert(source_args.begin(), "Flesh::out_dir=" + (dir / "3d").string());
+  RunResult a = run("handoff_source_tov_3d.yaml", source_args, false);
   const std::string file = (dir / "3d" / "grid-volume.it00000000.h5").string();
-  ASSERT_TRUE(std::filesystem::exists(file)) << file;
-  const RunResult b = run("handoff_tov_cyl_2d.yaml",
+  EXPECT_TRUE(std::filesystem::exists(file)) << file;
+  RunResult b = run("handoff_tov_cyl_2d.yaml",
                     {"Flesh::out_dir=" + (dir / "2d").string(), "HandOff::format=remnant", "HandOff::reflection=[x,y,z]",
                      "HandOff::files=[" + file + "]"},
                     true);
@@ -71,6 +76,11 @@ TEST(HandOffRoundTrip, Remnant3DOctantToCylindrical2D) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) std::filesystem::remove_all(dir);
+  return {std::move(a), std::move(b)};
+}
+
+TEST(HandOffRoundTrip, Remnant3DOctantToCylindrical2D) {
+  const auto [a, b] = octant_round_trip("handoff_roundtrip", {});
   const auto& h = b.report;
   std::printf("round trip: 3D octant M0 %.12f (x8 = %.12f), read back %.12f (%.1e); on the 2D grid %.10f, imported %.10f "
               "(%.1e), normalisation %.6f; rho_c 3D %.6e 2D %.6e (%.2e); psi_c 3D %.6f 2D %.6f (%.2e); alpha_c 3D %.6f "
@@ -93,22 +103,9 @@ TEST(HandOffRoundTrip, Remnant3DOctantToCylindrical2D) {
 // region (here through the star, at 6) had no data: 50 more cells without data, normalisation
 // 1.047, psi^4 vs gamma^(1/3) 1.3e-2. With it the hand-off is that of a uniform run.
 TEST(HandOffRoundTrip, RefinedRemnant3DOctantToCylindrical2D) {
-  long pid = static_cast<long>(::getpid());
-  MPI_Bcast(&pid, 1, MPI_LONG, 0, MPI_COMM_WORLD);
-  const auto dir = std::filesystem::temp_directory_path() / ("handoff_refined_" + std::to_string(pid));
-  const RunResult a = run("handoff_source_tov_3d.yaml",
-                          {"Flesh::out_dir=" + (dir / "3d").string(), "Grid::ncells=[16,16,16]", "Grid::block_size=[8,8,8]",
-                           "Grid::max_level=1", "Grid::regions=[box]", "Grid::region_levels=[1]", "Grid::region_bounds=[0,5,0,5,0,5]"},
-                          false);
-  const std::string file = (dir / "3d" / "grid-volume.it00000000.h5").string();
-  const RunResult b = run("handoff_tov_cyl_2d.yaml",
-                          {"Flesh::out_dir=" + (dir / "2d").string(), "HandOff::format=remnant", "HandOff::reflection=[x,y,z]",
-                           "HandOff::files=[" + file + "]"},
-                          true);
-  MPI_Barrier(MPI_COMM_WORLD);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  if (rank == 0) std::filesystem::remove_all(dir);
+  const auto [a, b] = octant_round_trip("handoff_refined", {"Grid::ncells=[16,16,16]", "Grid::block_size=[8,8,8]",
+                                                            "Grid::max_level=1", "Grid::regions=[box]", "Grid::region_levels=[1]",
+                                                            "Grid::region_bounds=[0,5,0,5,0,5]"});
   const auto& h = b.report;
   std::printf("refined round trip: M0 read back / 8 x run - 1 = %.1e; cells without data %lld of %lld; normalisation %.6f; "
               "psi4 vs gamma13 %.2e; rho_c 2D / 3D - 1 = %.2e\n",
