@@ -127,6 +127,7 @@ CollisionDiagnostics collision_diagnostics(Context& ctx) {
   c.rho_max_upper = std::isfinite(gbest[1]) ? gbest[1] : 0.0;
   c.z_max_upper = std::isfinite(gwhere[1]) ? gwhere[1] : 0.0;
   c.z_max_lower = std::isfinite(gwhere[0]) ? -gwhere[0] : -c.z_max_upper;  // the mirror without cells at z <= 0
+  c.rho_max_point = rho_max_point(ctx);
   return c;
 }
 

@@ -12,12 +12,13 @@
 namespace remnant::analysis {
 namespace {
 
-// The collision columns: rho_max normalised by the first row's, and h+ from the change of the
+// The collision columns: rho_max and its point value normalised by the first row's, and h+ from the change of the
 // momentum moment since the previous row (after a restart the first row has neither: 0 and 1).
 void add_collision_columns(Context& ctx, const History& history, StarDiagnostics& d) {
   d.collision = true;
   d.col = collision_diagnostics(ctx);
   d.rho_max_norm = history.rows.empty() ? 1.0 : d.rho_max / history.rows.front().rho_max;
+  d.rho_max_point_norm = history.rows.empty() ? 1.0 : d.col.rho_max_point / history.rows.front().col.rho_max_point;
   if (!history.rows.empty() && d.time > history.rows.back().time) {
     const double s = std::sin(ctx.param<double>("Analysis", "gw_theta"));
     d.h_plus = s * s / ctx.param<double>("Analysis", "gw_distance") * (d.col.quad_dI - history.rows.back().col.quad_dI) /

@@ -91,7 +91,7 @@ std::string tsv_header(bool rotation, bool magnetic, bool collision) {
   if (magnetic) h += "\tdivB_max\tE_mag\tE_mag_pol\tE_mag_tor\tB_max";
   if (collision)
     h += "\trho_max_norm\tM_rest_total\tM_adm\tM_komar_total\tquad_I\tquad_dI\th_plus\tz_rho_max_upper\t"
-         "z_rho_max_lower";
+         "z_rho_max_lower\trho_max_point\trho_max_point_norm";
   return h + "\n";
 }
 
@@ -112,9 +112,9 @@ std::string tsv_line(const StarDiagnostics& d) {
   }
   if (d.collision) {
     const CollisionDiagnostics& c = d.col;
-    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g",
+    n += std::snprintf(b + n, sizeof b - static_cast<std::size_t>(n), "\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g\t%.17g",
                        d.rho_max_norm, c.M_rest, c.M_adm, c.M_komar, c.quad_I, c.quad_dI, d.h_plus, c.z_max_upper,
-                       c.z_max_lower);
+                       c.z_max_lower, c.rho_max_point, d.rho_max_point_norm);
   }
   return std::string(b) + "\n";
 }

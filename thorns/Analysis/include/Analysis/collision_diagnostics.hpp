@@ -27,6 +27,7 @@ struct CollisionDiagnostics {
   double quad_I = 0, quad_dI = 0;             // I and dI/dt (whole space)
   double z_max_upper = 0, z_max_lower = 0;    // z of the density maxima in z > 0 and z <= 0 (mirror if absent)
   double rho_max_upper = 0;                   // the density maximum in z > 0
+  double rho_max_point = 0;  // point value of rho at its maximum (include/Analysis/point_maximum.hpp; NaN on spherical grids)
 };
 
 // True when the columns are written: Analysis::collision_diagnostics = always, or auto with HeadOn active.
@@ -35,5 +36,8 @@ bool collision_diagnostics_enabled(const Context& ctx);
 double symmetry_factor(const Context& ctx);
 // Collective; the same bits on every rank and for any rank count (per-block sums added in block order).
 CollisionDiagnostics collision_diagnostics(Context& ctx);
+// The point value of rho at the cell of its largest cell average (src/point_maximum_grid.cpp); collective,
+// the same on every rank count.
+double rho_max_point(Context& ctx);
 
 }  // namespace remnant::analysis

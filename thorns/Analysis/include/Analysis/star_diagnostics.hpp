@@ -30,6 +30,7 @@ struct StarDiagnostics {
   bool collision = false;
   CollisionDiagnostics col;
   double rho_max_norm = 0;  // rho_max / rho_max of the first row
+  double rho_max_point_norm = 0;  // col.rho_max_point / that of the first row
   double h_plus = 0;        // sin^2(theta) / D * d(quad_dI)/dt, backward difference to the previous row (0 on the first)
 };
 
@@ -40,7 +41,8 @@ struct History {
 // Collective over the grid's ranks; every rank gets the same values.
 StarDiagnostics star_diagnostics(Context& ctx);
 // The columns of a hydro run, then J .. mode_m2 with rotation, then divB_max, E_mag, E_mag_pol,
-// E_mag_tor, B_max with magnetic, then rho_max_norm .. z_rho_max_lower with collision.
+// E_mag_tor, B_max with magnetic, then rho_max_norm .. z_rho_max_lower, rho_max_point,
+// rho_max_point_norm with collision.
 std::string tsv_header(bool rotation, bool magnetic = false, bool collision = false);
 std::string tsv_line(const StarDiagnostics& d);
 
