@@ -25,8 +25,8 @@ def write(path, peak, point_peak):
                    "rest_mass": 1, "mass_budget": 1}
             row["rho_max"] = 1e-3 * row["rho_max_norm"]
             if point_peak:
-                # with a wiggle at contact (a local maximum of its own at t ~ 101, as in real runs)
-                row["rho_max_point_norm"] = 1 + (point_peak - 1) * bump + 0.2 * math.exp(-((t - 101) / 1.5) ** 2)
+                # with a wiggle at contact (a local maximum of its own at t = 102, as in real runs)
+                row["rho_max_point_norm"] = 1 + (point_peak - 1) * bump + 0.3 * math.exp(-((t - 102) / 1.0) ** 2)
                 row["rho_max_point"] = 1.05e-3 * row["rho_max_point_norm"]
             f.write("\t".join(repr(float(row[n])) for n in names) + "\n")
 write(sys.argv[1] + "/a.tsv", 2.5, 2.7)
