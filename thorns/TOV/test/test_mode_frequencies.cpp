@@ -169,7 +169,7 @@ std::vector<std::vector<std::string>> cylindrical_parfile_cadences() {
     const YAML::Node x = par["XCFC"];
     if (!x || x["solve_every"].as<int>(1) <= 1) continue;
     std::vector<std::string> c = {"XCFC::solve_every=" + x["solve_every"].as<std::string>(),
-                                  "XCFC::extrapolation=" + x["extrapolation"].as<std::string>("linear"),
+                                  "XCFC::extrapolation=" + x["extrapolation"].as<std::string>("auto"),
                                   "XCFC::update_every=" + x["update_every"].as<std::string>("0")};
     if (std::find(cadences.begin(), cadences.end(), c) == cadences.end()) cadences.push_back(c);
   }

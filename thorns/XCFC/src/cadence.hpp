@@ -10,6 +10,7 @@
 // the current one does nothing.
 #include <array>
 #include <optional>
+#include <string>
 
 #include "XCFC/xcfc_system.hpp"
 #include "grid_bridge.hpp"
@@ -38,6 +39,12 @@ struct MetricExtrapolation {
     }
   }
 };
+// Longest solve interval at which `auto` picks quadratic extrapolation (README, Cadence).
+inline constexpr int kQuadraticStableSolveEvery = 15;
+
+// XCFC::extrapolation with `auto` resolved by XCFC::solve_every.
+std::string resolved_extrapolation(Context& ctx);
+
 MetricExtrapolation metric_extrapolation(Context& ctx);
 
 // The warm starts: the last solve's psi, alpha psi and potentials, or, once two solves are
