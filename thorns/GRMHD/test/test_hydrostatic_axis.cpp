@@ -15,6 +15,7 @@
 #include "EOS/eos.hpp"
 #include "EOS/ideal_gas.hpp"
 #include "kernel_block.hpp"
+#include "static_polytrope_cell.hpp"
 #include "remnant/cell_geometry.hpp"
 #include "rhs.hpp"
 
@@ -62,15 +63,7 @@ Residual hydrostatic_residual(int n, Reconstruction rec, MetricFaceInterpolation
       met[Metric::idx::psi](i, j, 0) = psi_at(Rc, zc);
       for (int c = 0; c < 3; ++c) met[Metric::idx::beta + c](i, j, 0) = 0.0;
       const Point3 x = cell_point(b, i, j, 0);  // fluid: centroids
-      const double rho = rho_at(x[0], x[1]), p = kK * std::pow(rho, kGamma), eps = p / ((kGamma - 1.0) * rho);
-      prim[Prim::idx::rho](i, j, 0) = rho;
-      for (int c = 0; c < 3; ++c) prim[Prim::idx::vel + c](i, j, 0) = 0.0;
-      prim[Prim::idx::eps](i, j, 0) = eps;
-      prim[Prim::idx::press](i, j, 0) = p;
-      prim[Prim::idx::temperature](i, j, 0) = gas.temperature(rho, eps, 0.5).T;
-      prim[Prim::idx::Ye](i, j, 0) = 0.5;
-      prim[Prim::idx::W](i, j, 0) = 1.0;
-      prim[Prim::idx::cs2](i, j, 0) = kGamma * p / (rho + kGamma / (kGamma - 1.0) * p);
+      test::set_static_polytrope_cell(prim, i, j, 0, rho_at(x[0], x[1]), kK, kGamma, gas);
     }
   RhsSettings s;
   s.reconstruction = rec;

@@ -14,6 +14,7 @@
 #include "EOS/eos.hpp"
 #include "EOS/ideal_gas.hpp"
 #include "kernel_block.hpp"
+#include "static_polytrope_cell.hpp"
 #include "mhd_fluxes.hpp"
 #include "mhd_run.hpp"
 #include "remnant/error.hpp"
@@ -69,15 +70,7 @@ Imbalance imbalance(const Setup& st, int n, bool well_balanced, bool mhd) {
       // The discrete isentropic equilibrium: h alpha and K the same in every cell.
       const double h = q / alpha;
       const double rho = std::pow((h - 1.0) * (kGamma - 1.0) / (kGamma * kK), 1.0 / (kGamma - 1.0));
-      const double p = kK * std::pow(rho, kGamma), eps = p / ((kGamma - 1.0) * rho);
-      prim[Prim::idx::rho](i, j, 0) = rho;
-      for (int c = 0; c < 3; ++c) prim[Prim::idx::vel + c](i, j, 0) = 0.0;
-      prim[Prim::idx::eps](i, j, 0) = eps;
-      prim[Prim::idx::press](i, j, 0) = p;
-      prim[Prim::idx::temperature](i, j, 0) = gas.temperature(rho, eps, 0.5).T;
-      prim[Prim::idx::Ye](i, j, 0) = 0.5;
-      prim[Prim::idx::W](i, j, 0) = 1.0;
-      prim[Prim::idx::cs2](i, j, 0) = kGamma * p / (rho + kGamma / (kGamma - 1.0) * p);
+      test::set_static_polytrope_cell(prim, i, j, 0, rho, kK, kGamma, gas);
     }
   RhsSettings s;
   s.reconstruction = Reconstruction::ppm_ep;
