@@ -102,7 +102,7 @@ class StarBlock {
   }
   void fluxes() {
     if (!magnetic_) return compute_block_fluxes(eos_, rhs_settings_, g_, *block_);
-    compute_block_fluxes_mhd(eos_, rhs_settings_, g_, mg_, *block_);
+    compute_block_fluxes_mhd(eos_, rhs_settings_, g_, mg_, *block_, EmfScheme::uct_hll);
     edge_emfs(EmfScheme::uct_hll, mg_, *block_);
   }
   void divergence() {

@@ -63,7 +63,7 @@ std::array<double, 3> momentum_flux_weights(const Block& b, int d, const int* id
 
 template <int D, class E>
 void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
-                         MhdLineScratch& L) {
+                         MhdLineScratch& L, bool speeds_only_on_ghost_lines) {
   const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
   const SweepFields<D> fields(b, g);
@@ -133,23 +133,28 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.work[kWorkInvPrev][f] = h[prev] != 0 ? 1.0 / h[prev] : 0.0;
         }
       // Straight into the flux and ct groups (strided across x).
-      mhd_face_fluxes<D>(eos, n, flux_weight, L, line_face_output<D, kNumFluxMhd>(out, fbase, fields.flux_stride));
+      const auto face_out = line_face_output<D, kNumFluxMhd>(out, fbase, fields.flux_stride);
+      const bool ghost_line = ia < 0 || ia >= b.n[a] || ic < 0 || ic >= b.n[c2];
+      if (ghost_line && speeds_only_on_ghost_lines) mhd_face_speeds<D>(eos, n, L, face_out);
+      else mhd_face_fluxes<D>(eos, n, flux_weight, L, face_out);
     }
 }
 
 template <class E>
-void block_fluxes_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b) {
+void block_fluxes_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
+                      bool speeds_only) {
   thread_local MhdLineScratch scratch;
-  if (direction_used(b, 0)) sweep_direction_mhd<0>(eos, s, g, mg, b, scratch);
-  if (direction_used(b, 1)) sweep_direction_mhd<1>(eos, s, g, mg, b, scratch);
-  if (direction_used(b, 2)) sweep_direction_mhd<2>(eos, s, g, mg, b, scratch);
+  if (direction_used(b, 0)) sweep_direction_mhd<0>(eos, s, g, mg, b, scratch, speeds_only);
+  if (direction_used(b, 1)) sweep_direction_mhd<1>(eos, s, g, mg, b, scratch, speeds_only);
+  if (direction_used(b, 2)) sweep_direction_mhd<2>(eos, s, g, mg, b, scratch, speeds_only);
 }
 
 }  // namespace
 
 void compute_block_fluxes_mhd(const eos::EOS& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg,
-                              Block& b) {
-  eos.visit([&](const auto& e) { block_fluxes_mhd(e, s, g, mg, b); });
+                              Block& b, EmfScheme emfs) {
+  const bool speeds_only = emfs == EmfScheme::uct_hll;
+  eos.visit([&](const auto& e) { block_fluxes_mhd(e, s, g, mg, b, speeds_only); });
 }
 
 }  // namespace remnant::grmhd
