@@ -20,8 +20,9 @@ using MhdLineScratch = LineScratch<kNumRecMhd, kNumFluxMhd>;
 // the face and the inverse scale factors of the transverse components (1 in Cartesian coordinates).
 enum MhdFaceWork : int { kWorkBNormal = 8, kWorkInvNext = 9, kWorkInvPrev = 10 };
 
-// flatten: as hydro_face_loop.
-template <int D, class E, class Out>
+// flatten: as hydro_face_loop. Induction = false: without the induction fluxes (outputs 10, 11 left
+// alone; HLL of the six hydro components only, whose operations are the same).
+template <int D, bool Induction = true, class E, class Out>
 [[gnu::flatten]] inline void mhd_face_loop(const E& eos, int n, const std::array<double, 3>& flux_weight,
                                            const MhdLineScratch& L, const Out& out) {
   constexpr int next = (D + 1) % 3, prev = (D + 2) % 3;
@@ -48,7 +49,7 @@ template <int D, class E, class Out>
     flux_mhd(D, sr, mr, m, ur, fr);
     characteristic_speeds_mhd(D, sl, ml, m, lml, lpl);
     characteristic_speeds_mhd(D, sr, mr, m, lmr, lpr);
-    hll_select<kNumMhd>(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
+    hll_select<Induction ? kNumMhd : kNumCons>(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
     fh[kS1] *= w0;
     fh[kS2] *= w1;
     fh[kS3] *= w2;
@@ -63,8 +64,10 @@ template <int D, class E, class Out>
     out(kNumCons + kAlphaMinus, f) = -am;
     out(kNumCons + kVtLeft, f) = m.alpha * sl.v[D] - m.beta[D];
     out(kNumCons + kVtRight, f) = m.alpha * sr.v[D] - m.beta[D];
-    out(kNumCons + kFluxNext, f) = fh[kB1 + next] * psi6;
-    out(kNumCons + kFluxPrev, f) = fh[kB1 + prev] * psi6;
+    if constexpr (Induction) {
+      out(kNumCons + kFluxNext, f) = fh[kB1 + next] * psi6;
+      out(kNumCons + kFluxPrev, f) = fh[kB1 + prev] * psi6;
+    }
   }
 }
 
@@ -103,12 +106,12 @@ template <int D, class E, class Out>
 }
 
 // flux_weight: the momentum-flux factors of the line (mhd_fluxes.cpp's momentum_flux_weights).
-// Into `out` (a FaceOutput), or into L.flux.
-template <int D, class E, class Out>
+// Into `out` (a FaceOutput), or into L.flux; Induction: as mhd_face_loop.
+template <int D, bool Induction = true, class E, class Out>
 inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& flux_weight, MhdLineScratch& L,
                             const Out& out) {
   if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
-  mhd_face_loop<D>(eos, n, flux_weight, L, out);
+  mhd_face_loop<D, Induction>(eos, n, flux_weight, L, out);
 }
 // Only the speeds and transport velocities (mhd_face_speed_loop) into `out`.
 template <int D, class E, class Out>

@@ -63,7 +63,7 @@ std::array<double, 3> momentum_flux_weights(const Block& b, int d, const int* id
 
 template <int D, class E>
 void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
-                         MhdLineScratch& L, bool speeds_only_on_ghost_lines) {
+                         MhdLineScratch& L, const MhdSweepOutputs& outputs) {
   const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
   const SweepFields<D> fields(b, g);
@@ -135,26 +135,36 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
       // Straight into the flux and ct groups (strided across x).
       const auto face_out = line_face_output<D, kNumFluxMhd>(out, fbase, fields.flux_stride);
       const bool ghost_line = ia < 0 || ia >= b.n[a] || ic < 0 || ic >= b.n[c2];
-      if (ghost_line && speeds_only_on_ghost_lines) mhd_face_speeds<D>(eos, n, L, face_out);
-      else mhd_face_fluxes<D>(eos, n, flux_weight, L, face_out);
+      if (ghost_line && !outputs.ghost_line_fluxes) mhd_face_speeds<D>(eos, n, L, face_out);
+      else if (outputs.induction_fluxes) mhd_face_fluxes<D, true>(eos, n, flux_weight, L, face_out);
+      else mhd_face_fluxes<D, false>(eos, n, flux_weight, L, face_out);
     }
 }
 
 template <class E>
 void block_fluxes_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
-                      bool speeds_only) {
+                      const MhdSweepOutputs& outputs) {
   thread_local MhdLineScratch scratch;
-  if (direction_used(b, 0)) sweep_direction_mhd<0>(eos, s, g, mg, b, scratch, speeds_only);
-  if (direction_used(b, 1)) sweep_direction_mhd<1>(eos, s, g, mg, b, scratch, speeds_only);
-  if (direction_used(b, 2)) sweep_direction_mhd<2>(eos, s, g, mg, b, scratch, speeds_only);
+  if (direction_used(b, 0)) sweep_direction_mhd<0>(eos, s, g, mg, b, scratch, outputs);
+  if (direction_used(b, 1)) sweep_direction_mhd<1>(eos, s, g, mg, b, scratch, outputs);
+  if (direction_used(b, 2)) sweep_direction_mhd<2>(eos, s, g, mg, b, scratch, outputs);
 }
 
 }  // namespace
 
+MhdSweepOutputs MhdSweepOutputs::for_emfs(EmfScheme emfs, const Block& b) {
+  MhdSweepOutputs o;
+  if (emfs != EmfScheme::uct_hll) return o;
+  o.ghost_line_fluxes = false;
+  // uct_hll reads an induction flux only at edges with one transverse direction unused (its 1D flux).
+  o.induction_fluxes = !(direction_used(b, 0) && direction_used(b, 1) && direction_used(b, 2));
+  return o;
+}
+
 void compute_block_fluxes_mhd(const eos::EOS& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg,
                               Block& b, EmfScheme emfs) {
-  const bool speeds_only = emfs == EmfScheme::uct_hll;
-  eos.visit([&](const auto& e) { block_fluxes_mhd(e, s, g, mg, b, speeds_only); });
+  const MhdSweepOutputs outputs = MhdSweepOutputs::for_emfs(emfs, b);
+  eos.visit([&](const auto& e) { block_fluxes_mhd(e, s, g, mg, b, outputs); });
 }
 
 }  // namespace remnant::grmhd

@@ -1,11 +1,13 @@
-// With uct_hll the MHD sweep computes only the speeds and transport velocities (ct components
-// kAlphaPlus .. kVtRight) on the lines of the transverse ghost layers, the only face data of those
-// lines that the uct_hll EMFs read (src/mhd_fluxes.hpp): the interior lines' fluxes and every ct
-// speed and velocity must keep the bits of the full sweep (that arithmetic and uct_contact take),
-// the ghost lines' fluxes must be left alone, and the EMFs must be the same. Random (non-smooth)
-// states (every primitive and the metric random in every cell, ghosts too) on a 3D Cartesian block.
+// With uct_hll the MHD sweep computes only what the uct_hll EMFs read (src/mhd_fluxes.hpp,
+// MhdSweepOutputs): on the lines of the transverse ghost layers the speeds and transport velocities
+// (ct components kAlphaPlus .. kVtRight), and the induction fluxes (kFluxNext, kFluxPrev) only on
+// blocks with an unused direction. What it computes must keep the bits of the full sweep (that
+// arithmetic and uct_contact take), what it skips must be left alone, and the EMFs must be the
+// same. Random (non-smooth) states, every primitive and the metric random in every cell, ghosts
+// too, on a 3D and a 2D Cartesian block.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -17,6 +19,7 @@
 #include "constrained_transport.hpp"
 #include "kernel_block.hpp"
 #include "mhd_fluxes.hpp"
+#include "remnant/cell_geometry.hpp"
 
 namespace {
 
@@ -33,9 +36,9 @@ void fill_random_state(Block& b, const Groups& g, const MhdGroups& mg, std::uint
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   const Field psi = b.field(g.metric, Metric::idx::psi), alpha = b.field(g.metric, Metric::idx::alpha);
-  for (int k = -3; k < b.n[2] + 3; ++k)
-    for (int j = -3; j < b.n[1] + 3; ++j)
-      for (int i = -3; i < b.n[0] + 3; ++i) {
+  for (int k = -b.ng[2]; k < b.n[2] + b.ng[2]; ++k)
+    for (int j = -b.ng[1]; j < b.n[1] + b.ng[1]; ++j)
+      for (int i = -b.ng[0]; i < b.n[0] + b.ng[0]; ++i) {
         const double ps = 1.0 + 0.3 * u(rng), psi4 = ps * ps * ps * ps;
         psi(i, j, k) = ps;
         alpha(i, j, k) = 0.6 + 0.4 * u(rng);
@@ -78,39 +81,46 @@ FaceData sweep(Block& b, const Groups& g, const MhdGroups& mg, EmfScheme emfs) {
   return out;
 }
 
-TEST(MhdGhostLines, UctHllSweepsOnlyTheSpeedsOfTheGhostLinesWithTheSameBits) {
-  const VariableRegistry vars = test::kernel_registry();
-  const Groups g = test::hydro_groups(vars);
-  const MhdGroups mg = test::mhd_groups(vars);
-  constexpr int n = 6;
-  const std::unique_ptr<Block> block = test::kernel_block(vars, n);
-  Block& b = *block;
-  fill_random_state(b, g, mg, 5);
+// The full sweep's and the uct_hll sweep's face data and EMFs on block b (3D or 2D along z).
+void expect_uct_hll_outputs(Block& b, const Groups& g, const MhdGroups& mg, std::uint64_t seed) {
+  fill_random_state(b, g, mg, seed);
+  const bool all_used = direction_used(b, 0) && direction_used(b, 1) && direction_used(b, 2);
   const FaceData full = sweep(b, g, mg, EmfScheme::arithmetic);
   const FaceData fast = sweep(b, g, mg, EmfScheme::uct_hll);
-  int differ = 0, ghost_speeds = 0, ghost_fluxes_left = 0, ghost_fluxes = 0;
+  int differ = 0, ghost_speeds = 0, ghost_fluxes_left = 0, ghost_fluxes = 0, induction = 0, induction_left = 0;
   for (int d = 0; d < 3; ++d) {
+    if (!direction_used(b, d)) continue;
     const Field f0 = b.field(g.flux[d], 0), c0 = b.field(mg.ct[d], 0);
     const std::size_t nf = b.points_per_component(g.flux[d]), nc = b.points_per_component(mg.ct[d]);
-    for (int k = -1; k <= n; ++k)
-      for (int j = -1; j <= n; ++j)
-        for (int i = -1; i <= n; ++i) {
+    int lo[3], hi[3];  // faces 0..n along d, one ghost layer in the used transverse directions
+    for (int e = 0; e < 3; ++e) {
+      lo[e] = e == d || !direction_used(b, e) ? 0 : -1;
+      hi[e] = e == d ? b.n[e] : direction_used(b, e) ? b.n[e] : 0;
+    }
+    for (int k = lo[2]; k <= hi[2]; ++k)
+      for (int j = lo[1]; j <= hi[1]; ++j)
+        for (int i = lo[0]; i <= hi[0]; ++i) {
           const int id[3] = {i, j, k};
-          bool ghost = false, outside = id[d] < 0;
+          bool ghost = false;
           for (int e = 0; e < 3; ++e)
-            if (e != d) ghost = ghost || id[e] < 0 || id[e] >= n;
-          if (outside) continue;  // faces 0..n along d
+            if (e != d) ghost = ghost || id[e] < 0 || id[e] >= b.n[e];
           const std::size_t of = static_cast<std::size_t>(&f0(i, j, k) - b.data(g.flux[d]));
           const std::size_t oc = static_cast<std::size_t>(&c0(i, j, k) - b.data(mg.ct[d]));
           for (int q = 0; q < kNumCt; ++q) {
             const double want = full.ct[d][q * nc + oc], got = fast.ct[d][q * nc + oc];
-            if (q <= kVtRight || !ghost) differ += !same_bits(want, got);
-            if (q <= kVtRight && ghost) ghost_speeds += !std::isnan(got);
+            const bool speed = q <= kVtRight;
+            if (speed || (!ghost && !all_used)) differ += !same_bits(want, got);
+            if (speed && ghost) ghost_speeds += !std::isnan(got);
+            if (!speed && !ghost) {
+              induction += !std::isnan(want);
+              induction_left += std::isnan(got);
+            }
           }
           for (int q = 0; q < kNumCons; ++q) {
             const double want = full.flux[d][q * nf + of], got = fast.flux[d][q * nf + of];
-            if (!ghost) differ += !same_bits(want, got);
-            else {
+            if (!ghost) {
+              differ += !same_bits(want, got);
+            } else {
               ghost_fluxes += !std::isnan(want);
               ghost_fluxes_left += std::isnan(got);
             }
@@ -121,6 +131,9 @@ TEST(MhdGhostLines, UctHllSweepsOnlyTheSpeedsOfTheGhostLinesWithTheSameBits) {
   EXPECT_GT(ghost_speeds, 0);
   EXPECT_GT(ghost_fluxes, 0) << "the full sweep computes the ghost lines' fluxes";
   EXPECT_EQ(ghost_fluxes_left, ghost_fluxes) << "the uct_hll sweep solved HLL on ghost lines";
+  EXPECT_GT(induction, 0);
+  if (all_used) EXPECT_EQ(induction_left, induction) << "the uct_hll sweep computed induction fluxes in 3D";
+  else EXPECT_EQ(induction_left, 0) << "the 1D fluxes of the edges with an unused direction";
   // The EMFs read only what both sweeps computed alike.
   std::vector<double> emf_full[3];
   sweep(b, g, mg, EmfScheme::arithmetic);
@@ -128,10 +141,28 @@ TEST(MhdGhostLines, UctHllSweepsOnlyTheSpeedsOfTheGhostLinesWithTheSameBits) {
   for (int c = 0; c < 3; ++c) emf_full[c].assign(b.data(mg.emf[c]), b.data(mg.emf[c]) + b.size(mg.emf[c]));
   sweep(b, g, mg, EmfScheme::uct_hll);
   edge_emfs(EmfScheme::uct_hll, mg, b);
-  int emf_differ = 0;
+  int emf_differ = 0, emf_nan = 0;
   for (int c = 0; c < 3; ++c)
-    for (std::size_t i = 0; i < emf_full[c].size(); ++i) emf_differ += !same_bits(emf_full[c][i], b.data(mg.emf[c])[i]);
+    for (std::size_t i = 0; i < emf_full[c].size(); ++i) {
+      emf_differ += !same_bits(emf_full[c][i], b.data(mg.emf[c])[i]);
+      emf_nan += std::isnan(emf_full[c][i]);
+    }
   EXPECT_EQ(emf_differ, 0);
+  EXPECT_EQ(emf_nan, 0) << "an EMF read a face datum that no sweep computed";
+}
+
+TEST(MhdSweepOutputs, UctHllComputesOnlyWhatItsEmfsReadWithTheSameBits) {
+  const VariableRegistry vars = test::kernel_registry();
+  const Groups g = test::hydro_groups(vars);
+  const MhdGroups mg = test::mhd_groups(vars);
+  {
+    const std::unique_ptr<Block> block = test::kernel_block(vars, 6);
+    expect_uct_hll_outputs(*block, g, mg, 5);
+  }
+  {
+    Block flat(0, 0, {0, 0, 0}, {7, 5, 1}, {3, 3, 0}, {0.0, 0.0, 0.0}, {0.3, 0.25, 1.0}, vars);
+    expect_uct_hll_outputs(flat, g, mg, 6);
+  }
 }
 
 }  // namespace
