@@ -102,9 +102,12 @@ class StarBlock {
   }
   void fluxes() {
     if (!magnetic_) return compute_block_fluxes(eos_, rhs_settings_, g_, *block_);
-    compute_block_fluxes_mhd(eos_, rhs_settings_, g_, mg_, *block_, EmfScheme::uct_hll);
-    edge_emfs(EmfScheme::uct_hll, mg_, *block_);
+    mhd_sweeps();
+    mhd_emfs();
   }
+  // The two parts of fluxes() with the field (BM_PartMHD).
+  void mhd_sweeps() { compute_block_fluxes_mhd(eos_, rhs_settings_, g_, mg_, *block_, EmfScheme::uct_hll); }
+  void mhd_emfs() { edge_emfs(EmfScheme::uct_hll, mg_, *block_); }
   void divergence() {
     if (!magnetic_) return compute_block_rhs(g_, *block_);
     face_rhs(mg_, *block_);
