@@ -103,7 +103,9 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.cell[kRecBPrev][m] *= h[prev];
         }
       }
-      reconstruct_line<D, E>(s, b, trig, idx, n, src, base, fields.stride, L);
+      // A ghost line of uct_hll gives only speeds: the ideal gas's need no Ye.
+      const bool speeds_only = !outputs.ghost_line_fluxes && (ia < 0 || ia >= b.n[a] || ic < 0 || ic >= b.n[c2]);
+      reconstruct_line<D, E>(s, b, trig, idx, n, src, base, fields.stride, L, speeds_only && reconstructs_pressure<E>);
       if constexpr (reconstructs_pressure<E>)
         if (s.well_balanced)
           well_balanced_faces(IdealIsentrope{eos.gamma()}, s.reconstruction, s.metric_faces,
@@ -134,8 +136,7 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
         }
       // Straight into the flux and ct groups (strided across x).
       const auto face_out = line_face_output<D, kNumFluxMhd>(out, fbase, fields.flux_stride);
-      const bool ghost_line = ia < 0 || ia >= b.n[a] || ic < 0 || ic >= b.n[c2];
-      if (ghost_line && !outputs.ghost_line_fluxes) mhd_face_speeds<D>(eos, n, L, face_out);
+      if (speeds_only) mhd_face_speeds<D>(eos, n, L, face_out);
       else if (outputs.induction_fluxes) mhd_face_fluxes<D, true>(eos, n, flux_weight, L, face_out);
       else mhd_face_fluxes<D, false>(eos, n, flux_weight, L, face_out);
     }
