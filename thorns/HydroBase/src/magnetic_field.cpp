@@ -55,16 +55,21 @@ struct RowScratch {
 };
 
 // The area-weighted mean of the two faces of direction a for cells i = 0..n-1 of a row: g0m/g0p the
-// x factors of the lower/upper faces (arrays), g12m/g12p the product's constant factors.
+// x factors of the lower/upper faces (arrays), g1*, g2* the product's constant factors; times
+// ipsi6[i] where given (the cell-centred B itself), else the mean alone.
 void face_mean_row(const double* __restrict lo, const double* __restrict hi, const double* __restrict g0m,
                    const double* __restrict g0p, double g1m, double g2m, double g1p, double g2p,
-                   double* __restrict mean, int n) {
-  for (int i = 0; i < n; ++i) {
+                   const double* __restrict ipsi6, double* __restrict out, int n) {
+  const auto mean = [&](int i) {
     const double am = g0m[i] * g1m * g2m, ap = g0p[i] * g1p * g2p;  // 1.0 * g0 * g1 * g2, as face_area
     const double w = am + ap;
     const double weighted = (am * lo[i] + ap * hi[i]) / w, plain = 0.5 * (lo[i] + hi[i]);
-    mean[i] = w > 0 ? weighted : plain;
-  }
+    return w > 0 ? weighted : plain;
+  };
+  if (ipsi6)
+    for (int i = 0; i < n; ++i) out[i] = mean(i) * ipsi6[i];
+  else
+    for (int i = 0; i < n; ++i) out[i] = mean(i);
 }
 
 }  // namespace
@@ -105,13 +110,17 @@ void cell_centred_field(const FieldGroups& g, Block& b) {
         const double* g0 = a == 0 ? ff[0] : vw[0];
         const double g1m = a == 1 ? ff[1][j] : vw[1][j], g1p = a == 1 ? ff[1][j + 1] : vw[1][j];
         const double g2m = a == 2 ? ff[2][k] : vw[2][k], g2p = a == 2 ? ff[2][k + 1] : vw[2][k];
-        face_mean_row(lo, lo + up, g0, a == 0 ? g0 + 1 : g0, g1m, g2m, g1p, g2p, mean, n);
-        if (curvilinear && a > 0)
-          for (int i = 0; i < n; ++i) {
-            const int id[3] = {i, j, k};
-            const Point3 f = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k));
-            mean[i] *= orthonormal_factor(b, a, id) / std::sqrt(f[a]);
-          }
+        if (!curvilinear || a == 0) {  // straight into Bvec
+          face_mean_row(lo, lo + up, g0, a == 0 ? g0 + 1 : g0, g1m, g2m, g1p, g2p, ipsi6, o, n);
+          continue;
+        }
+        // Curvilinear theta, phi: the orthonormal factor between the mean and 1/psi^6.
+        face_mean_row(lo, lo + up, g0, a == 0 ? g0 + 1 : g0, g1m, g2m, g1p, g2p, nullptr, mean, n);
+        for (int i = 0; i < n; ++i) {
+          const int id[3] = {i, j, k};
+          const Point3 f = coords::metric_diagonal(b.coordinates, cell_point(b, i, j, k));
+          mean[i] *= orthonormal_factor(b, a, id) / std::sqrt(f[a]);
+        }
         for (int i = 0; i < n; ++i) o[i] = mean[i] * ipsi6[i];
       }
     }
