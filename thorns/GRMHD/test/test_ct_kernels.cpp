@@ -181,7 +181,8 @@ TEST(CtKernels, CartesianUctHllUsesTheChosenEdgeReconstruction) {
 // HydroBase's cell_centred_field runs in rows (1/psi^6 once per cell, the face areas from the
 // per-direction arrays, the weighted mean as a select) to vectorise: it must give the bits of the
 // per-cell formula with Block::face_area, in Cartesian 3D, in 2D (an unused direction: its one
-// face) and on a cylindrical block with the axis (zero-area faces, the orthonormal factor).
+// face) and on cylindrical and spherical blocks with the axis and the origin (zero-area faces, the
+// orthonormal factor).
 double cell_centred_reference(Block& blk, const MhdGroups& g, int metric, int a, int i, int j, int k) {
   const double psi = blk.field(metric, Metric::idx::psi)(i, j, k);
   const double p2 = psi * psi, ipsi6 = 1.0 / (p2 * p2 * p2);
@@ -234,6 +235,12 @@ TEST(CtKernels, CellCentredFieldHasTheBitsOfThePointwiseFormula) {
     block->set_geometry(CoordinateSystem::cylindrical, {0.0, -0.6, 0.0});
     ASSERT_EQ(block->face_area(0, 0, 1, 1), 0.0);  // the axis
     expect_cell_centred_bits(*block, vars, 13);
+  }
+  {
+    const std::unique_ptr<Block> block = test::kernel_block(vars, 6, {0.3, 0.25, 0.2});
+    block->set_geometry(CoordinateSystem::spherical, {0.0, 0.0, 0.0});
+    ASSERT_EQ(block->face_area(0, 0, 1, 1), 0.0);  // the origin
+    expect_cell_centred_bits(*block, vars, 14);
   }
 }
 
