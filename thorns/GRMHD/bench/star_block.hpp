@@ -72,15 +72,17 @@ class StarBlock {
         });
       }
       if (magnetic_)
-        for (int d = 0; d < 3; ++d) {
+        for (int d = 0; d < 3; ++d) {  // the interior faces, in rows along x (as MoL's update, vectorised)
           Field f = b.field(mg_.bface[d], 0), r = b.field(mg_.bface_rhs[d], 0);
           const std::ptrdiff_t off = f.origin - b.data(mg_.bface[d]);
           for (int k = 0; k < b.n[2] + (d == 2); ++k)
-            for (int j = 0; j < b.n[1] + (d == 1); ++j)
-              for (int i = 0; i < b.n[0] + (d == 0); ++i) {
-                double& x = f(i, j, k);
-                x = a[s] * b0_[d][std::size_t(off + i + j * f.sj + k * f.sk)] + w[s] * (x + dt * r(i, j, k));
-              }
+            for (int j = 0; j < b.n[1] + (d == 1); ++j) {
+              const std::ptrdiff_t o = j * f.sj + k * f.sk;
+              double* __restrict x = f.origin + o;
+              const double* __restrict x0 = b0_[d].data() + off + o;
+              const double* __restrict rhs = r.origin + j * r.sj + k * r.sk;
+              for (int i = 0; i < b.n[0] + (d == 0); ++i) x[i] = a[s] * x0[i] + w[s] * (x[i] + dt * rhs[i]);
+            }
         }
       recover();
     }
@@ -102,9 +104,12 @@ class StarBlock {
   }
   void fluxes() {
     if (!magnetic_) return compute_block_fluxes(eos_, rhs_settings_, g_, *block_);
-    compute_block_fluxes_mhd(eos_, rhs_settings_, g_, mg_, *block_);
-    edge_emfs(EmfScheme::uct_hll, mg_, *block_);
+    mhd_sweeps();
+    mhd_emfs();
   }
+  // The two parts of fluxes() with the field (BM_PartMHD).
+  void mhd_sweeps() { compute_block_fluxes_mhd(eos_, rhs_settings_, g_, mg_, *block_, EmfScheme::uct_hll); }
+  void mhd_emfs() { edge_emfs(EmfScheme::uct_hll, mg_, *block_); }
   void divergence() {
     if (!magnetic_) return compute_block_rhs(g_, *block_);
     face_rhs(mg_, *block_);

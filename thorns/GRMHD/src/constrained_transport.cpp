@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "GRMHD/reconstruction.hpp"
 #include "HydroBase/magnetic_field.hpp"
@@ -107,31 +108,61 @@ struct CtRow {
       : alpha_plus(ct[kAlphaPlus].f.origin + o), alpha_minus(ct[kAlphaMinus].f.origin + o),
         vt_left(ct[kVtLeft].f.origin + o), vt_right(ct[kVtRight].f.origin + o) {}
 };
+// slope: mc_slope_select of q along sq at every point (mc_slopes), computed once per face value
+// instead of once for each of the two edges that read it (the same operations, so the same bits).
 [[gnu::always_inline]] inline double upwind_part_select(const CtRow& ct, std::ptrdiff_t oa, std::ptrdiff_t sb,
-                                                        const double* __restrict q, std::ptrdiff_t sq) {
+                                                        const double* __restrict q,
+                                                        const double* __restrict slope, std::ptrdiff_t sq) {
   const std::ptrdiff_t lo = oa - sb;
   const double apl = ct.alpha_plus[lo], aph = ct.alpha_plus[oa], aml = ct.alpha_minus[lo], amh = ct.alpha_minus[oa];
   const double ap = apl < aph ? aph : apl;  // std::max(apl, aph)
   const double am = aml < amh ? amh : aml;
   const double vl = 0.5 * (ct.vt_left[lo] + ct.vt_left[oa]);
   const double vh = 0.5 * (ct.vt_right[lo] + ct.vt_right[oa]);
-  const double qm2 = q[oa - 2 * sq], qm1 = q[oa - sq], q0 = q[oa], qp1 = q[oa + sq];
-  const double bl = qm1 + 0.5 * mc_slope_select(qm1 - qm2, q0 - qm1);
-  const double bh = q0 - 0.5 * mc_slope_select(q0 - qm1, qp1 - q0);
+  const double qm1 = q[oa - sq], q0 = q[oa];
+  const double bl = qm1 + 0.5 * slope[oa - sq];
+  const double bh = q0 - 0.5 * slope[oa];
   const double w = ap + am;
   const double hll = (ap * vl * bl + am * vh * bh - ap * am * (bh - bl)) / w;
   const double mean = 0.5 * (vl * bl + vh * bh);
   return !(w > 0) ? mean : hll;
 }
 
+// The MC slopes of the face values q along stride sq, mc_slope_select(q - q[-sq], q[+sq] - q), into
+// `out` (indexed as q) at the points lo .. hi - 1 of the field's index space (sj, sk: its strides).
+void mc_slopes(const double* q, std::ptrdiff_t sj, std::ptrdiff_t sk, std::ptrdiff_t sq, const int* lo, const int* hi,
+               double* out) {
+  for (int k = lo[2]; k < hi[2]; ++k)
+    for (int j = lo[1]; j < hi[1]; ++j) {
+      const std::ptrdiff_t o = lo[0] + j * sj + k * sk;
+      const double* __restrict p = q + o;
+      double* __restrict s = out + o;
+      for (int i = 0; i < hi[0] - lo[0]; ++i) s[i] = mc_slope_select(p[i] - p[i - sq], p[i + sq] - p[i]);
+    }
+}
+
+// The slopes a row of edges reads: of q = face field `f` along direction d, for the edges
+// 0 .. ext - 1 (points -1 .. ext - 1 along d), in `storage` (resized to the field's group).
+const double* edge_slopes(Block& b, int group, const Strided& f, int d, const int* ext, std::vector<double>& storage) {
+  storage.resize(b.size(group));
+  double* out = storage.data() + (f.f.origin - b.data(group));
+  int lo[3] = {0, 0, 0}, hi[3] = {ext[0], ext[1], ext[2]};
+  lo[d] = -1;
+  mc_slopes(f.f.origin, f.f.sj, f.f.sk, f.stride(d), lo, hi, out);
+  return out;
+}
+
 template <int C>
-void uct_hll_row_cartesian(const Strided* cta, const Strided* ctb, const Strided& Ba, const Strided& Bb, const int* id,
-                           int len, const double* ffa, const double* ffb, const double* vwc, double len_c, const Strided& e) {
+void uct_hll_row_cartesian(const Strided* cta, const Strided* ctb, const Strided& Ba, const Strided& Bb,
+                           const double* slope_a, const double* slope_b, const int* id, int len, const double* ffa,
+                           const double* ffb, const double* vwc, double len_c, const Strided& e) {
   constexpr int a = (C + 1) % 3, bb = (C + 2) % 3;
   const CtRow ra(cta, cta[0].at(id)), rb(ctb, ctb[0].at(id));
   const std::ptrdiff_t sb = cta[0].stride(bb), sa = ctb[0].stride(a);
   const double* __restrict qb = Bb.f.origin + Bb.at(id);  // B^bb along a
   const double* __restrict qa = Ba.f.origin + Ba.at(id);  // B^a along bb
+  const double* __restrict slb = slope_b + Bb.at(id);  // their MC slopes
+  const double* __restrict sla = slope_a + Ba.at(id);
   const std::ptrdiff_t sqb = Bb.stride(a), sqa = Ba.stride(bb);
   double* __restrict out = e.f.origin + e.at(id);
   // The factors that vary along x (direction 0) are read at i, the others at the row's index.
@@ -141,7 +172,7 @@ void uct_hll_row_cartesian(const Strided* cta, const Strided* ctb, const Strided
   // ivdep: out (an EMF group) is only written, the face data only read.
 #pragma GCC ivdep
   for (int i = 0; i < len; ++i) {
-    const double emf = -upwind_part_select(ra, i, sb, qb, sqb) + upwind_part_select(rb, i, sa, qa, sqa);
+    const double emf = -upwind_part_select(ra, i, sb, qb, slb, sqb) + upwind_part_select(rb, i, sa, qa, sla, sqa);
     out[i] = emf * fa[a == 0 ? i : 0] * fb[bb == 0 ? i : 0] * fc[C == 0 ? i : 0] / len_c;
   }
 }
@@ -179,11 +210,14 @@ void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block&
     // The vectorised Cartesian rows hard-code the MC edge slopes: other edge reconstructions
     // (GRMHD::emf_reconstruction) take the general loop.
     if (scheme == EmfScheme::uct_hll && edge_reconstruction == Reconstruction::mc && !curvilinear && used[a] && used[bb]) {
+      thread_local std::vector<double> slope_storage[2];
+      const double* slope_b = edge_slopes(b, g.bface[bb], Bb, a, ext, slope_storage[0]);  // B^bb along a
+      const double* slope_a = edge_slopes(b, g.bface[a], Ba, bb, ext, slope_storage[1]);  // B^a along bb
       for (id[2] = 0; id[2] < ext[2]; ++id[2])
         for (id[1] = 0; id[1] < ext[1]; ++id[1]) {
           id[0] = 0;
           const auto row = c == 0 ? uct_hll_row_cartesian<0> : c == 1 ? uct_hll_row_cartesian<1> : uct_hll_row_cartesian<2>;
-          row(cta, ctb, Ba, Bb, id, ext[0], ffa, ffb, vwc, len_c, e);
+          row(cta, ctb, Ba, Bb, slope_a, slope_b, id, ext[0], ffa, ffb, vwc, len_c, e);
         }
       continue;
     }

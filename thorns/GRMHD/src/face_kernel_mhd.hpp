@@ -20,8 +20,9 @@ using MhdLineScratch = LineScratch<kNumRecMhd, kNumFluxMhd>;
 // the face and the inverse scale factors of the transverse components (1 in Cartesian coordinates).
 enum MhdFaceWork : int { kWorkBNormal = 8, kWorkInvNext = 9, kWorkInvPrev = 10 };
 
-// flatten: as hydro_face_loop.
-template <int D, class E, class Out>
+// flatten: as hydro_face_loop. Induction = false: without the induction fluxes (outputs 10, 11 left
+// alone; HLL of the six hydro components only, whose operations are the same).
+template <int D, bool Induction = true, class E, class Out>
 [[gnu::flatten]] inline void mhd_face_loop(const E& eos, int n, const std::array<double, 3>& flux_weight,
                                            const MhdLineScratch& L, const Out& out) {
   constexpr int next = (D + 1) % 3, prev = (D + 2) % 3;
@@ -48,7 +49,7 @@ template <int D, class E, class Out>
     flux_mhd(D, sr, mr, m, ur, fr);
     characteristic_speeds_mhd(D, sl, ml, m, lml, lpl);
     characteristic_speeds_mhd(D, sr, mr, m, lmr, lpr);
-    hll_select<kNumMhd>(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
+    hll_select<Induction ? kNumMhd : kNumCons>(ul, ur, fl, fr, lml, lpl, lmr, lpr, fh);
     fh[kS1] *= w0;
     fh[kS2] *= w1;
     fh[kS3] *= w2;
@@ -63,18 +64,60 @@ template <int D, class E, class Out>
     out(kNumCons + kAlphaMinus, f) = -am;
     out(kNumCons + kVtLeft, f) = m.alpha * sl.v[D] - m.beta[D];
     out(kNumCons + kVtRight, f) = m.alpha * sr.v[D] - m.beta[D];
-    out(kNumCons + kFluxNext, f) = fh[kB1 + next] * psi6;
-    out(kNumCons + kFluxPrev, f) = fh[kB1 + prev] * psi6;
+    if constexpr (Induction) {
+      out(kNumCons + kFluxNext, f) = fh[kB1 + next] * psi6;
+      out(kNumCons + kFluxPrev, f) = fh[kB1 + prev] * psi6;
+    }
+  }
+}
+
+// The part of mhd_face_loop that the uct_hll EMFs read (outputs 6..9: alpha^+-, the transport
+// velocities), for the lines of the transverse ghost layers, whose fluxes no one reads with uct_hll:
+// the same operations for these outputs, without the conserved variables, the fluxes and HLL.
+template <int D, class E, class Out>
+[[gnu::flatten]] inline void mhd_face_speed_loop(const E& eos, int n, const MhdLineScratch& L, const Out& out) {
+  constexpr int next = (D + 1) % 3, prev = (D + 2) % 3;
+#pragma GCC ivdep
+  for (int f = 0; f <= n; ++f) {
+    const PointMetric m = face_point_metric<D>(L.face, f);
+    const FluidState sl = face_side_state<0>(eos, m, L, f), sr = face_side_state<1>(eos, m, L, f);
+    const double in = L.work[kWorkInvNext][f], ip = L.work[kWorkInvPrev][f];
+    double Bl[3], Br[3];
+    Bl[D] = Br[D] = L.work[kWorkBNormal][f];
+    Bl[next] = L.left[kRecBNext][f] * in;
+    Br[next] = L.right[kRecBNext][f] * in;
+    Bl[prev] = L.left[kRecBPrev][f] * ip;
+    Br[prev] = L.right[kRecBPrev][f] * ip;
+    const MagneticState ml = magnetic_state(sl, m, Bl[0], Bl[1], Bl[2]);
+    const MagneticState mr = magnetic_state(sr, m, Br[0], Br[1], Br[2]);
+    double lml, lpl, lmr, lpr;
+    characteristic_speeds_mhd(D, sl, ml, m, lml, lpl);
+    characteristic_speeds_mhd(D, sr, mr, m, lmr, lpr);
+    double ap = 0.0, am = 0.0;  // as mhd_face_loop
+    ap = ap < lpl ? lpl : ap;
+    ap = ap < lpr ? lpr : ap;
+    am = lml < am ? lml : am;
+    am = lmr < am ? lmr : am;
+    out(kNumCons + kAlphaPlus, f) = ap;
+    out(kNumCons + kAlphaMinus, f) = -am;
+    out(kNumCons + kVtLeft, f) = m.alpha * sl.v[D] - m.beta[D];
+    out(kNumCons + kVtRight, f) = m.alpha * sr.v[D] - m.beta[D];
   }
 }
 
 // flux_weight: the momentum-flux factors of the line (mhd_fluxes.cpp's momentum_flux_weights).
-// Into `out` (a FaceOutput), or into L.flux.
-template <int D, class E, class Out>
+// Into `out` (a FaceOutput), or into L.flux; Induction: as mhd_face_loop.
+template <int D, bool Induction = true, class E, class Out>
 inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& flux_weight, MhdLineScratch& L,
                             const Out& out) {
   if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
-  mhd_face_loop<D>(eos, n, flux_weight, L, out);
+  mhd_face_loop<D, Induction>(eos, n, flux_weight, L, out);
+}
+// Only the speeds and transport velocities (mhd_face_speed_loop) into `out`.
+template <int D, class E, class Out>
+inline void mhd_face_speeds(const E& eos, int n, MhdLineScratch& L, const Out& out) {
+  if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
+  mhd_face_speed_loop<D>(eos, n, L, out);
 }
 template <int D, class E>
 inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& flux_weight, MhdLineScratch& L) {

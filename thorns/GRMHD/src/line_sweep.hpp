@@ -38,13 +38,15 @@ struct SweepFields {
 };
 
 // Reconstructs the gathered line (the slots E reconstructs) and sets its face metric; along x with
-// the stride known at compile time.
+// the stride known at compile time. without_ye: Ye is not reconstructed (a line whose face states
+// give only speeds, with an EOS whose thermodynamics at the faces needs no Ye: the ideal gas).
 template <int D, class E, int NumRec, int NumFlux>
 inline void reconstruct_line(const RhsSettings& s, const Block& b, const PolarTrig& trig, const std::array<int, 3>& idx,
                              int n, const LineSources& src, std::ptrdiff_t base, std::ptrdiff_t stride,
-                             LineScratch<NumRec, NumFlux>& L) {
+                             LineScratch<NumRec, NumFlux>& L, bool without_ye = false) {
   for (int q = 0; q < NumRec; ++q)
-    if (reconstructed_slot<E>(q)) reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
+    if (reconstructed_slot<E>(q) && !(without_ye && q == kRecYe))
+      reconstruct(s.reconstruction, L.cell[q], L.left[q], L.right[q], n, L.ppm_scratch());
   if constexpr (D == 0) set_face_metric(b, trig, s.metric_faces, D, idx.data(), n, src, base, UnitStride{}, L);
   else set_face_metric(b, trig, s.metric_faces, D, idx.data(), n, src, base, stride, L);
 }

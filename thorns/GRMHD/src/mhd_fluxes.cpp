@@ -63,7 +63,7 @@ std::array<double, 3> momentum_flux_weights(const Block& b, int d, const int* id
 
 template <int D, class E>
 void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
-                         MhdLineScratch& L) {
+                         MhdLineScratch& L, const MhdSweepOutputs& outputs) {
   const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
   const SweepFields<D> fields(b, g);
@@ -103,7 +103,9 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.cell[kRecBPrev][m] *= h[prev];
         }
       }
-      reconstruct_line<D, E>(s, b, trig, idx, n, src, base, fields.stride, L);
+      // A ghost line of uct_hll gives only speeds: the ideal gas's need no Ye.
+      const bool speeds_only = !outputs.ghost_line_fluxes && (ia < 0 || ia >= b.n[a] || ic < 0 || ic >= b.n[c2]);
+      reconstruct_line<D, E>(s, b, trig, idx, n, src, base, fields.stride, L, speeds_only && reconstructs_pressure<E>);
       if constexpr (reconstructs_pressure<E>)
         if (s.well_balanced)
           well_balanced_faces(IdealIsentrope{eos.gamma()}, s.reconstruction, s.metric_faces,
@@ -133,23 +135,37 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
           L.work[kWorkInvPrev][f] = h[prev] != 0 ? 1.0 / h[prev] : 0.0;
         }
       // Straight into the flux and ct groups (strided across x).
-      mhd_face_fluxes<D>(eos, n, flux_weight, L, line_face_output<D, kNumFluxMhd>(out, fbase, fields.flux_stride));
+      const auto face_out = line_face_output<D, kNumFluxMhd>(out, fbase, fields.flux_stride);
+      if (speeds_only) mhd_face_speeds<D>(eos, n, L, face_out);
+      else if (outputs.induction_fluxes) mhd_face_fluxes<D, true>(eos, n, flux_weight, L, face_out);
+      else mhd_face_fluxes<D, false>(eos, n, flux_weight, L, face_out);
     }
 }
 
 template <class E>
-void block_fluxes_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b) {
+void block_fluxes_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
+                      const MhdSweepOutputs& outputs) {
   thread_local MhdLineScratch scratch;
-  if (direction_used(b, 0)) sweep_direction_mhd<0>(eos, s, g, mg, b, scratch);
-  if (direction_used(b, 1)) sweep_direction_mhd<1>(eos, s, g, mg, b, scratch);
-  if (direction_used(b, 2)) sweep_direction_mhd<2>(eos, s, g, mg, b, scratch);
+  if (direction_used(b, 0)) sweep_direction_mhd<0>(eos, s, g, mg, b, scratch, outputs);
+  if (direction_used(b, 1)) sweep_direction_mhd<1>(eos, s, g, mg, b, scratch, outputs);
+  if (direction_used(b, 2)) sweep_direction_mhd<2>(eos, s, g, mg, b, scratch, outputs);
 }
 
 }  // namespace
 
+MhdSweepOutputs MhdSweepOutputs::for_emfs(EmfScheme emfs, const Block& b) {
+  MhdSweepOutputs o;
+  if (emfs != EmfScheme::uct_hll) return o;
+  o.ghost_line_fluxes = false;
+  // uct_hll reads an induction flux only at edges with one transverse direction unused (its 1D flux).
+  o.induction_fluxes = !(direction_used(b, 0) && direction_used(b, 1) && direction_used(b, 2));
+  return o;
+}
+
 void compute_block_fluxes_mhd(const eos::EOS& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg,
-                              Block& b) {
-  eos.visit([&](const auto& e) { block_fluxes_mhd(e, s, g, mg, b); });
+                              Block& b, EmfScheme emfs) {
+  const MhdSweepOutputs outputs = MhdSweepOutputs::for_emfs(emfs, b);
+  eos.visit([&](const auto& e) { block_fluxes_mhd(e, s, g, mg, b, outputs); });
 }
 
 }  // namespace remnant::grmhd
