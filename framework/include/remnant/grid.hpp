@@ -158,6 +158,16 @@ class GridDriver {
     (void)fn;
     throw std::runtime_error("this grid has no refinement; cannot add criterion '" + name + "'");
   }
+
+  // A thorn's own condition at `outflow` faces for one group: called by synchronize() for every
+  // block face on such a face of the domain (direction d, upper or lower side), right after the
+  // zero-gradient copy of the group's ghost layers there, in the same direction-by-direction
+  // order. E.g. HydroBase's no-inflow condition on its primitive velocity.
+  using OutflowCondition = std::function<void(Block&, int d, bool upper)>;
+  virtual void add_outflow_condition(int group, OutflowCondition fn) {
+    (void)group, (void)fn;
+    throw std::runtime_error("this grid has no outflow faces to add a condition to");
+  }
 };
 
 // Calls f(i, j, k) for every interior cell of a block, i fastest.

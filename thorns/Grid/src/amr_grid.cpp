@@ -123,7 +123,7 @@ void AmrGrid::synchronize(std::span<const int> groups) {
     exchange_for(stagger).run(*vars_, gs, [&](int phase) {
       // Phase 0 filled every block from same-level and finer neighbours; phase p the blocks of level p.
       for (Block* b : block_ptrs_)
-        if (phase == 0 || b->level == phase) apply_outflow(*b, *forest_, config_, *vars_, gs);
+        if (phase == 0 || b->level == phase) apply_outflow(*b, *forest_, config_, *vars_, gs, outflow_conditions_);
     });
   }
 }
@@ -211,6 +211,11 @@ void AmrGrid::correct_edges(std::span<const int> edge_groups) {
     if (!e) e = std::make_unique<EdgeCorrection>(*forest_, *maps_, block_ptrs_, rank_, exchange_comm_, stagger);
     e->run(*vars_, gs);
   }
+}
+
+void AmrGrid::add_outflow_condition(int group, OutflowCondition fn) {
+  if (group < 0 || group >= vars_->size()) throw std::logic_error("Grid: outflow condition for an unknown group");
+  outflow_conditions_[group].push_back(std::move(fn));
 }
 
 void AmrGrid::add_refinement_criterion(const std::string& name, RefinementCriterion fn) {

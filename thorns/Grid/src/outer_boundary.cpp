@@ -32,7 +32,7 @@ void fill_face(const Field& f, const Block& b, const std::array<int, 3>& stagger
 }  // namespace
 
 void apply_outflow(Block& block, const Forest& forest, const GridConfig& config, const VariableRegistry& vars,
-                   std::span<const int> groups) {
+                   std::span<const int> groups, const std::map<int, std::vector<GridDriver::OutflowCondition>>& conditions) {
   const BlockIndex nb = forest.blocks_on_level(block.level);
   for (int d = 0; d < forest.dimension(); ++d) {
     const auto ud = static_cast<std::size_t>(d);
@@ -44,6 +44,8 @@ void apply_outflow(Block& block, const Forest& forest, const GridConfig& config,
         const auto& spec = vars.group(g);
         const auto stagger = staggering(spec.centering);
         for (int comp = 0; comp < spec.ncomp(); ++comp) fill_face(block.field(g, comp), block, stagger, d, upper);
+        if (const auto it = conditions.find(g); it != conditions.end())
+          for (const auto& condition : it->second) condition(block, d, upper);
       }
     }
   }

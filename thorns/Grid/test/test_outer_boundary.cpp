@@ -93,3 +93,37 @@ TEST(OuterBoundary, ReflectionParitiesFollowTheTensorType) {
 
 }  // namespace
 }  // namespace remnant::grid::test
+
+namespace remnant::grid::test {
+namespace {
+
+// GridDriver::add_outflow_condition: called once per block face on an outflow face of the domain,
+// for its group only, after the zero-gradient copy (the ghost already equals the layer inside).
+TEST(OuterBoundary, OutflowConditionRunsAfterTheCopyOnBoundaryFacesOnly) {
+  TestGroups t = make_test_groups();
+  const GridConfig c = box3d(Boundary::reflect, Boundary::outflow);
+  AmrGrid grid(c, t.vars, MPI_COMM_SELF);
+  const std::vector<int> groups = {t.scalar, t.vector};
+  for (int g : groups) fill_interior(grid, t.vars, g);
+  int calls = 0, copied = 0, lower = 0;
+  grid.add_outflow_condition(t.scalar, [&](Block& b, int d, bool upper) {
+    ++calls;
+    lower += !upper;
+    int ghost[3] = {0, 0, 0}, inside[3] = {0, 0, 0};
+    ghost[d] = b.n[static_cast<std::size_t>(d)];
+    inside[d] = b.n[static_cast<std::size_t>(d)] - 1;
+    const Field f = b.field(t.scalar, 0);
+    copied += f(ghost[0], ghost[1], ghost[2]) == f(inside[0], inside[1], inside[2]);
+    const auto ud = static_cast<std::size_t>(d);
+    EXPECT_EQ((b.index[ud] + 1) * c.block_size[ud], c.ncells[ud]);  // a block on the upper face
+  });
+  grid.synchronize(groups);
+  // Blocks 3 x 2 x 2: 4 upper x faces, 6 upper y, 6 upper z; the lower faces reflect.
+  EXPECT_EQ(calls, 16);
+  EXPECT_EQ(copied, 16);
+  EXPECT_EQ(lower, 0);
+  EXPECT_EQ(count_wrong_points(grid, t.vars, t.scalar), 0);  // the condition changed nothing
+}
+
+}  // namespace
+}  // namespace remnant::grid::test

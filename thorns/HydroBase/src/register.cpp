@@ -5,6 +5,7 @@
 #include <string>
 
 #include "HydroBase/magnetic_field.hpp"
+#include "HydroBase/outflow_boundary.hpp"
 #include "HydroBase/sweeps.hpp"
 #include "remnant/error.hpp"
 #include "remnant/registrar.hpp"
@@ -48,6 +49,7 @@ void refresh_field(Context& ctx) {
 REMNANT_REGISTER_THORN(HydroBase) {
   using namespace remnant::hydrobase;
   reg.function("HydroBase_InitialCons", initial_cons);
+  reg.function("HydroBase_OutflowBoundary", register_outflow_boundary);
   reg.function("HydroBase_InitialField", [](remnant::Context& ctx) {
     const FieldGroups g = FieldGroups::of(ctx);
     for (remnant::Block* b : ctx.grid().local_blocks()) cell_centred_field(g, *b);

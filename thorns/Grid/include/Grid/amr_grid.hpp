@@ -51,6 +51,7 @@ class AmrGrid final : public GridDriver {
   void correct_fluxes(std::span<const int> face_groups) override;
   void correct_edges(std::span<const int> edge_groups) override;
   void add_refinement_criterion(const std::string& name, RefinementCriterion fn) override;
+  void add_outflow_condition(int group, OutflowCondition fn) override;
 
   // One adaptive regrid: synchronises every variable, evaluates the criteria (Löhner on
   // Grid::refine_variable and the thorns' criteria) and the static regions, refines or coarsens
@@ -90,6 +91,7 @@ class AmrGrid final : public GridDriver {
   std::unique_ptr<FluxCorrection> flux_;
   std::map<std::array<int, 3>, std::unique_ptr<EdgeCorrection>> edges_;
   std::vector<std::pair<std::string, RefinementCriterion>> criteria_;
+  std::map<int, std::vector<OutflowCondition>> outflow_conditions_;  // per group, in the order added
   int refine_group_ = -1, refine_comp_ = 0;
   double min_spacing_ = 0;
   std::vector<int> last_wishes_;
