@@ -16,7 +16,8 @@
 
 namespace remnant::xcfc {
 
-void CompositeMultigrid::Impl::fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par, const Tier::Split* mine_only) {
+void CompositeMultigrid::Impl::fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par, const Tier::Split* mine_only,
+                                    const std::vector<int>* only) {
   Tier& T = tiers[static_cast<std::size_t>(t)];
   if (t == 0) {
     fill_ghosts(T.patches[0], eq, T.patches[0].u, false);
@@ -31,6 +32,10 @@ void CompositeMultigrid::Impl::fill(int t, const ScalarEquation& eq, const std::
     for (const Recipe& r : recipes) T.patches[p].u[r.target] = evaluate(R, r, par, eq, false, u);
     ghosts_filled += static_cast<long long>(recipes.size());
   };
+  if (only && nranks > 1) {
+    for (const int p : *only) fill_patch(static_cast<std::size_t>(p));
+    return;
+  }
   if (mine_only && nranks > 1) {
     const auto [u0, u1] = mine(*mine_only);
     for (std::size_t n = u0; n < u1; ++n)
@@ -38,6 +43,17 @@ void CompositeMultigrid::Impl::fill(int t, const ScalarEquation& eq, const std::
     return;
   }
   for (std::size_t p = 0; p < T.patches.size(); ++p) fill_patch(p);
+}
+
+const std::vector<int>& CompositeMultigrid::Impl::own_parents(int t) {
+  auto& cache = parents_of_own[static_cast<std::size_t>(t)];
+  if (!cache.empty()) return cache;
+  const auto [p0, p1] = own_patches(t);
+  for (std::size_t p = p0; p < p1; ++p)
+    cache.push_back(static_cast<int>(footprint(tiers[static_cast<std::size_t>(t)], tiers[static_cast<std::size_t>(t) - 1], p).parent));
+  std::sort(cache.begin(), cache.end());
+  cache.erase(std::unique(cache.begin(), cache.end()), cache.end());
+  return cache;
 }
 
 void CompositeMultigrid::Impl::relax(int t, const ScalarEquation& eq, const std::array<double, 64>& par, int sweeps) {
@@ -97,8 +113,9 @@ void CompositeMultigrid::Impl::vcycle(const ScalarEquation& eq, const std::array
     // The solution and the residual restricted into r and u of the coarse patches' covered cells.
     restrict_own_patches(t, eq, par, true);
     // The coarse right-hand side in the covered cells, A(R u) + R r: each rank for the footprints of
-    // its own fine patches (the rows through them), then exchanged like the restriction.
-    fill(t - 1, eq, par);
+    // its own fine patches (the rows through them), then exchanged like the restriction. Only the
+    // ghosts of those footprints' parents are read.
+    fill(t - 1, eq, par, nullptr, t - 1 >= 1 ? &own_parents(t) : nullptr);
     const auto [p0, p1] = own_patches(t);
     for (std::size_t p = p0; p < p1; ++p) {
       const Footprint fp = footprint(tiers[static_cast<std::size_t>(t)], C, p);

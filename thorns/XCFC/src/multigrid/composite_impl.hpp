@@ -92,7 +92,12 @@ struct CompositeMultigrid::Impl {
   // ---- operations on a tier ---------------------------------------------------------------------
   // mine: only the patches of this rank's units of that split (the ghosts its relaxation reads; a
   // recipe reads interior values only, so the filled ghosts have the bits of a whole fill).
-  void fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par, const Tier::Split* mine = nullptr);
+  // only (several ranks): just these patches of tier t.
+  void fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par, const Tier::Split* mine = nullptr,
+            const std::vector<int>* only = nullptr);
+  // The parents (patches of tier t - 1) of this rank's patches of tier t >= 1, sorted.
+  const std::vector<int>& own_parents(int t);
+  std::vector<std::vector<int>> parents_of_own;  // per tier, built on first use
   long long ghosts_filled = 0;  // by this rank in the current solve (recipes evaluated)
 
   // Relaxation of a tier's patches: red-black points (1D, 3D Cartesian) or zebra lines along runs of

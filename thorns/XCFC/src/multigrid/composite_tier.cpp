@@ -34,21 +34,28 @@ Tier::Split make_split(const Tier& T, std::vector<std::vector<int>> units, int n
 
 void exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank, int nranks) {
   if (nranks == 1) return;
-  std::vector<double> mine_buf, all(static_cast<std::size_t>(S.displs.back() + S.counts.back()));
+  // Buffers kept between calls (sized once, not zero-filled per pass), and only the partners'
+  // units unpacked: a pass costs this rank its own cells to pack and the others' to unpack.
+  const auto total = static_cast<std::size_t>(S.displs.back() + S.counts.back());
+  if (T.exchange_buffer.size() < total) T.exchange_buffer.resize(total);
+  double* all = T.exchange_buffer.data();
   const auto [u0, u1] = owned_units(S, rank);
+  double* mine = all + S.displs[static_cast<std::size_t>(rank)];
   for (std::size_t u = u0; u < u1; ++u)
     for (int p : S.units[u]) {
       const Level& P = T.patches[static_cast<std::size_t>(p)];
-      for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { mine_buf.push_back(P.u[static_cast<std::size_t>(g)]); });
+      for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { *mine++ = P.u[static_cast<std::size_t>(g)]; });
     }
-  MPI_Allgatherv(mine_buf.data(), static_cast<int>(mine_buf.size()), MPI_DOUBLE, all.data(), S.counts.data(), S.displs.data(),
-                 MPI_DOUBLE, comm);
-  std::size_t at = 0;
-  for (const auto& unit : S.units)
-    for (int p : unit) {
-      Level& P = T.patches[static_cast<std::size_t>(p)];
-      for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { P.u[static_cast<std::size_t>(g)] = all[at++]; });
-    }
+  MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DOUBLE, all, S.counts.data(), S.displs.data(), MPI_DOUBLE, comm);
+  for (int r = 0; r < nranks; ++r) {
+    if (r == rank) continue;
+    const double* at = all + S.displs[static_cast<std::size_t>(r)];
+    for (std::size_t u = S.first[static_cast<std::size_t>(r)]; u < S.first[static_cast<std::size_t>(r) + 1]; ++u)
+      for (int p : S.units[u]) {
+        Level& P = T.patches[static_cast<std::size_t>(p)];
+        for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { P.u[static_cast<std::size_t>(g)] = *at++; });
+      }
+  }
 }
 
 void build_runs(Tier& T) {

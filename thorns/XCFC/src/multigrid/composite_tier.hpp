@@ -51,6 +51,7 @@ struct Tier {
   };
   Split points;
   std::array<Split, 3> lines;
+  std::vector<double> exchange_buffer;  // exchange_units' gather, kept between passes
 };
 
 
