@@ -270,12 +270,14 @@ double monopole_radius(const GridShape& s, const ScalarEquation& eq) {
 // gathered (MPI_Allgatherv, 6 values a row) and added in row order, so the bits do not depend on
 // the number of ranks and no rank loops over every cell.
 std::array<double, 3> monopole_weights(const CompositeMultigrid& mg, const VectorField& src, const std::array<double, 3>& radius,
-                                       const std::array<UnitCharge, 3>& unit) {
+                                       const std::array<UnitCharge, 3>& unit, long long& visited) {
   constexpr std::size_t kPer = 6;  // m_0..2, q_0..2
-  std::vector<std::size_t> first_row{0};
+  std::vector<std::size_t> first_row{0}, row_start{0};  // first row of each part; first cell of each row
   for (int n = 0; n < mg.parts(); ++n) {
     const GridShape& s = mg.part(n).shape;
     first_row.push_back(first_row.back() + static_cast<std::size_t>(s.n[1]) * static_cast<std::size_t>(s.n[2]));
+    for (std::size_t r = first_row[first_row.size() - 2]; r < first_row.back(); ++r)
+      row_start.push_back(row_start.back() + static_cast<std::size_t>(s.n[0]));
   }
   const std::size_t rows = first_row.back();
   int rank = 0, nranks = 1;
@@ -284,7 +286,11 @@ std::array<double, 3> monopole_weights(const CompositeMultigrid& mg, const Vecto
     MPI_Comm_rank(comm, &rank);
     MPI_Comm_size(comm, &nranks);
   }
-  auto cut = [&](int r) { return rows * static_cast<std::size_t>(r) / static_cast<std::size_t>(nranks); };
+  // Rows dealt out in contiguous ranges balanced by cells (patch rows are shorter than the base's).
+  auto cut = [&](int r) {
+    const std::size_t target = row_start.back() * static_cast<std::size_t>(r) / static_cast<std::size_t>(nranks);
+    return static_cast<std::size_t>(std::lower_bound(row_start.begin(), row_start.end() - 1, target) - row_start.begin());
+  };
   const std::size_t r0 = cut(rank), r1 = cut(rank + 1);
   std::vector<double> partial(kPer * rows, 0.0);
   for (int n = 0; n < mg.parts(); ++n) {
@@ -300,6 +306,7 @@ std::array<double, 3> monopole_weights(const CompositeMultigrid& mg, const Vecto
       const std::size_t local = row - first_row[static_cast<std::size_t>(n)];
       const int j = static_cast<int>(local % n1), k = static_cast<int>(local / n1);
       double* out = &partial[kPer * row];
+      visited += s.n[0];
       for (int i = 0; i < s.n[0]; ++i) {
         const std::size_t c = static_cast<std::size_t>(i) + n0 * local;
         if (mg.covered(n, c)) continue;
@@ -347,9 +354,11 @@ inline double chi1_gradient(int a, const Point3& X, double r, const std::array<d
 // fn(n, q, X, r) for this rank's share of the cells of every part (covered cells included: they
 // hold restrictions), X the Cartesian position; the caller completes what it wrote.
 template <class Fn>
-void for_share_positions(const CompositeMultigrid& mg, Fn&& fn) {
+void for_share_positions(const CompositeMultigrid& mg, long long& visited, Fn&& fn) {
   for (int n = 0; n < mg.parts(); ++n) {
     const GridShape& s = mg.part(n).shape;
+    const auto [b, e] = mg.share().range(n);
+    visited += static_cast<long long>(e - b);
     for_share_cells(mg, n, [&](std::size_t c, std::size_t, int i, int j, int k) {
       const Point3 X = cartesian_position(s, i, j, k);
       fn(static_cast<std::size_t>(n), c, X, std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
@@ -389,11 +398,11 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
     radius[a] = monopole_radius(s, eqs[a].boundary);
     unit[a] = UnitCharge(radius[a] > 0 ? radius[a] : 1.0);
   }
-  if (radius[0] > 0 || radius[1] > 0 || radius[2] > 0) M = monopole_weights(mg, src, radius, unit);
+  if (radius[0] > 0 || radius[1] > 0 || radius[2] > 0) M = monopole_weights(mg, src, radius, unit, stats.monopole_cells);
   const bool split = M[0] != 0 || M[1] != 0 || M[2] != 0;
   if (split) {
     // B += grad chi_1 / 4 - M g, s0 -= M q: on this rank's share, then completed.
-    for_share_positions(mg, [&](std::size_t n, std::size_t c, const Point3& X, double r) {
+    for_share_positions(mg, stats.monopole_cells, [&](std::size_t n, std::size_t c, const Point3& X, double r) {
       for (int a = 0; a < 3; ++a) {
         if (!active[a]) continue;
         double& b = warm.B[a].part[n][c];
@@ -424,7 +433,7 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
   chi.s0 = divergence(mg, to_coordinate(mg, warm.B));
   if (split) {
     // B += M g - grad chi_1 / 4: the kept potentials (see above).
-    for_share_positions(mg, [&](std::size_t n, std::size_t c, const Point3& X, double r) {
+    for_share_positions(mg, stats.monopole_cells, [&](std::size_t n, std::size_t c, const Point3& X, double r) {
       for (int a = 0; a < 3; ++a) {
         if (!active[a]) continue;
         double& b = warm.B[a].part[n][c];

@@ -257,11 +257,13 @@ void check_composite(const char* name, const GridShape& base, std::array<int, 3>
     if (nranks == 2) EXPECT_NEAR(double(mine) / double(total), 0.5, 0.1) << name;
     // The patch ghosts are filled for this rank's units only: before each relaxation pass, and for
     // the residuals and restrictions (each rank restricts its own patches into the coarse covered
-    // cells, the leaf residual is reduced from each rank's patches): measured 0.51-0.52 of one
-    // rank's on 2 ranks (0.65-0.66 when the residuals and transfers filled every patch).
+    // cells, the leaf residual is reduced from each rank's patches, the coarse right-hand side
+    // fills only the parents of its own patches): measured 0.48-0.49 of one rank's on 2 ranks
+    // (0.51-0.52 when every rank filled the whole coarser tier for the right-hand side, 0.65-0.66
+    // when the residuals and transfers filled every patch).
     EXPECT_GT(sa.ghost_entries, 0) << name;
     if (nranks == 1) EXPECT_EQ(sa.ghost_entries, sb.ghost_entries) << name;
-    if (nranks == 2) EXPECT_LE(double(sb.ghost_entries), 0.55 * double(sa.ghost_entries)) << name;
+    if (nranks == 2) EXPECT_LE(double(sb.ghost_entries), 0.50 * double(sa.ghost_entries)) << name;
     if (rank == 0) std::printf("composite %-14s patch ghosts filled by rank 0 / one rank: %.3f\n", name, double(sb.ghost_entries) / double(sa.ghost_entries));
     if (rank == 0)
       std::printf("composite %-14s %s: %d parts, %d V-cycles, bits equal to one rank; finest level relaxed by rank 0: %.3f; "

@@ -92,13 +92,15 @@ struct CompositeMultigrid::Impl {
   // ---- operations on a tier ---------------------------------------------------------------------
   // mine: only the patches of this rank's units of that split (the ghosts its relaxation reads; a
   // recipe reads interior values only, so the filled ghosts have the bits of a whole fill).
-  // only (several ranks): just these patches of tier t.
-  void fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par, const Tier::Split* mine = nullptr,
-            const std::vector<int>* only = nullptr);
-  // The parents (patches of tier t - 1) of this rank's patches of tier t >= 1, sorted.
-  const std::vector<int>& own_parents(int t);
-  std::vector<std::vector<int>> parents_of_own;  // per tier, built on first use
+  void fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par, const Tier::Split* mine = nullptr);
+  // The parents (patches of tier t - 1) of this rank's patches of tier t >= 1, as a split whose units
+  // (one patch each) are all this rank's: for fill.
+  const Tier::Split& own_parents(int t);
+  std::vector<Tier::Split> parents_of_own;  // per tier, built on first use
+  // A split whose units are `patches`, all owned by this rank (fill of just these patches).
+  Tier::Split only_these(const std::vector<int>& patches) const;
   long long ghosts_filled = 0;  // by this rank in the current solve (recipes evaluated)
+  std::vector<std::vector<const double*>> fill_arrays;  // fill's u of each (tier, patch)
 
   // Relaxation of a tier's patches: red-black points (1D, 3D Cartesian) or zebra lines along runs of
   // patches in every direction (2D, 3D cylindrical and spherical; a row split into patches is one

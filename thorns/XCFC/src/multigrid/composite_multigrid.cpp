@@ -375,7 +375,8 @@ CompositeField CompositeMultigrid::with_ghosts(const ScalarEquation& boundary, c
     if (t == 0) {
       if (!touched.empty()) m.fill(0, boundary, par);
     } else {
-      m.fill(t, boundary, par, nullptr, &touched);
+      const Tier::Split S = m.only_these(touched);
+      m.fill(t, boundary, par, &S);
     }
   }
   for (const auto& [t, p] : m.part_of) out.part.push_back(m.tiers[static_cast<std::size_t>(t)].patches[static_cast<std::size_t>(p)].u);
