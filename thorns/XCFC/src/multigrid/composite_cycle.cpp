@@ -87,7 +87,7 @@ void CompositeMultigrid::Impl::relax(int t, const ScalarEquation& eq, const std:
         Level& P = T.patches[static_cast<std::size_t>(T.points.units[u][0])];
         count(t, red_black_pass(P, full_range(P), colour));
       }
-      exchange(T, T.points);
+      exchange(T, T.points, colour);  // the pass changed only this colour's cells
     }
 }
 

@@ -56,11 +56,9 @@ struct CompositeMultigrid::Impl {
 
   Tier::Split split(const Tier& T, std::vector<std::vector<int>> units) const { return make_split(T, std::move(units), nranks); }
   std::pair<std::size_t, std::size_t> mine(const Tier::Split& S) const { return owned_units(S, rank); }
-  void exchange(Tier& T, const Tier::Split& S) {
-    exchange_units(T, S, comm, rank, nranks);
-    if (nranks > 1)
-      comm::count("mg_tier_exchange", comm::Pattern::allgather, static_cast<int>(&T - tiers.data()), 1,
-                  static_cast<long long>(sizeof(double)) * (S.displs.back() + S.counts.back() - S.counts[static_cast<std::size_t>(rank)]));
+  void exchange(Tier& T, const Tier::Split& S, int colour = -1) {
+    const long long bytes = exchange_units(T, S, comm, rank, nranks, colour);
+    if (nranks > 1) comm::count("mg_tier_exchange", comm::Pattern::allgather, static_cast<int>(&T - tiers.data()), 1, bytes);
   }
 
   int locate(int t, const Cell& I) const { return xcfc::locate(tiers[static_cast<std::size_t>(t)], I); }
