@@ -42,8 +42,11 @@ void for_exchanged_cells(const Level& P, int colour, F&& f) {
     return;
   }
   for (int k = 0; k < P.shape.n[2]; ++k)
-    for (int j = 0; j < P.shape.n[1]; ++j)
-      for (int i = (j + k + colour) & 1; i < P.shape.n[0]; i += 2) f(static_cast<std::size_t>(P.at(i, j, k)));
+    for (int j = 0; j < P.shape.n[1]; ++j) {
+      const int i0 = (j + k + colour) & 1;
+      auto g = static_cast<std::size_t>(P.at(i0, j, k));
+      for (int i = i0; i < P.shape.n[0]; i += 2, g += 2) f(g);
+    }
 }
 std::size_t exchanged_cells(const Level& P, int colour) {
   const std::size_t n = P.cells();
@@ -59,14 +62,17 @@ long long exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank,
   // a red-black pass of one colour only that colour's cells changed: only they are sent.
   const int* counts = S.counts.data();
   const int* displs = S.displs.data();
-  std::vector<int> cc, cd;
   if (colour >= 0) {
-    cc.assign(static_cast<std::size_t>(nranks), 0);
-    cd.assign(static_cast<std::size_t>(nranks), 0);
-    for (int r = 0; r < nranks; ++r) {
-      for (std::size_t u = S.first[static_cast<std::size_t>(r)]; u < S.first[static_cast<std::size_t>(r) + 1]; ++u)
-        for (int p : S.units[u]) cc[static_cast<std::size_t>(r)] += static_cast<int>(exchanged_cells(T.patches[static_cast<std::size_t>(p)], colour));
-      if (r > 0) cd[static_cast<std::size_t>(r)] = cd[static_cast<std::size_t>(r) - 1] + cc[static_cast<std::size_t>(r) - 1];
+    auto& cc = S.colour_counts[static_cast<std::size_t>(colour & 1)];
+    auto& cd = S.colour_displs[static_cast<std::size_t>(colour & 1)];
+    if (cc.empty()) {  // once per split and colour
+      cc.assign(static_cast<std::size_t>(nranks), 0);
+      cd.assign(static_cast<std::size_t>(nranks), 0);
+      for (int r = 0; r < nranks; ++r) {
+        for (std::size_t u = S.first[static_cast<std::size_t>(r)]; u < S.first[static_cast<std::size_t>(r) + 1]; ++u)
+          for (int p : S.units[u]) cc[static_cast<std::size_t>(r)] += static_cast<int>(exchanged_cells(T.patches[static_cast<std::size_t>(p)], colour));
+        if (r > 0) cd[static_cast<std::size_t>(r)] = cd[static_cast<std::size_t>(r) - 1] + cc[static_cast<std::size_t>(r) - 1];
+      }
     }
     counts = cc.data();
     displs = cd.data();

@@ -48,6 +48,8 @@ struct Tier {
     std::vector<std::vector<int>> units;  // patches of each unit
     std::vector<std::size_t> first;       // first unit of each rank (nranks + 1 entries)
     std::vector<int> counts, displs;      // doubles per rank
+    // The same for one red-black colour's cells (exchange_units), built on first use.
+    mutable std::array<std::vector<int>, 2> colour_counts, colour_displs;
   };
   Split points;
   std::array<Split, 3> lines;
