@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <vector>
+
+#include "remnant/comm_counters.hpp"
 
 namespace remnant::xcfc {
 
@@ -143,7 +146,7 @@ VectorField ghosted_coordinate_components(CompositeMultigrid& mg, const VectorFi
   const GridShape& s = mg.base_shape();
   const VectorField cart = to_cartesian(mg, up);
   VectorField gc;
-  for (int a = 0; a < 3; ++a) gc[a] = mg.with_ghosts(cartesian_component_equation(s, a), cart[a]);
+  for (int a = 0; a < 3; ++a) gc[a] = mg.with_ghosts(cartesian_component_equation(s, a), cart[a], true);
   VectorField out = sized(mg, true);
   // Every ghosted cell, in storage order: this rank's share of them (CellShare over ghosted arrays).
   const CellShare& share = mg.share(true);
@@ -260,58 +263,114 @@ double monopole_radius(const GridShape& s, const ScalarEquation& eq) {
   return R < 1e300 ? 0.5 * R : 0;
 }
 
-// The weight M of the unit charge that carries the source's monopole: the source's volume integral
-// over the leaf cells over the charge's (the factors of mirrored or unused directions cancel).
-double monopole_weight(const CompositeMultigrid& mg, const CompositeField& src, const UnitCharge& unit) {
-  double m = 0, q = 0;
+// The weights M_a of the unit charges that carry the sources' monopoles: each source's volume
+// integral over the leaf cells over the charge's (the factors of mirrored or unused directions
+// cancel), for the components with radius > 0. The sums go by rows of cells ((j, k) of each part in
+// storage order): each rank sums its contiguous range of the rows, the rows' partial sums are
+// gathered (MPI_Allgatherv, 6 values a row) and added in row order, so the bits do not depend on
+// the number of ranks and no rank loops over every cell.
+std::array<double, 3> monopole_weights(const CompositeMultigrid& mg, const VectorField& src, const std::array<double, 3>& radius,
+                                       const std::array<UnitCharge, 3>& unit, long long& visited) {
+  constexpr std::size_t kPer = 6;  // m_0..2, q_0..2
+  std::vector<std::size_t> first_row{0}, row_start{0};  // first row of each part; first cell of each row
   for (int n = 0; n < mg.parts(); ++n) {
     const GridShape& s = mg.part(n).shape;
-    // The cell integrals per direction and index (separable): 1D tables, multiplied per cell in the
-    // same order as before.
+    first_row.push_back(first_row.back() + static_cast<std::size_t>(s.n[1]) * static_cast<std::size_t>(s.n[2]));
+    for (std::size_t r = first_row[first_row.size() - 2]; r < first_row.back(); ++r)
+      row_start.push_back(row_start.back() + static_cast<std::size_t>(s.n[0]));
+  }
+  const std::size_t rows = first_row.back();
+  int rank = 0, nranks = 1;
+  const MPI_Comm comm = mg.comm();
+  if (comm != MPI_COMM_SELF) {
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &nranks);
+  }
+  // Rows dealt out in contiguous ranges balanced by cells (patch rows are shorter than the base's).
+  auto cut = [&](int r) {
+    const std::size_t target = row_start.back() * static_cast<std::size_t>(r) / static_cast<std::size_t>(nranks);
+    return static_cast<std::size_t>(std::lower_bound(row_start.begin(), row_start.end() - 1, target) - row_start.begin());
+  };
+  const std::size_t r0 = cut(rank), r1 = cut(rank + 1);
+  std::vector<double> partial(kPer * rows, 0.0);
+  for (int n = 0; n < mg.parts(); ++n) {
+    const std::size_t b = std::max(r0, first_row[static_cast<std::size_t>(n)]), e = std::min(r1, first_row[static_cast<std::size_t>(n) + 1]);
+    if (b >= e) continue;
+    const GridShape& s = mg.part(n).shape;
+    // The cell integrals per direction and index (separable): 1D tables, multiplied per cell.
     std::array<std::vector<double>, 3> w;
     for (int d = 0; d < s.dimension; ++d)
       for (int i = 0; i < s.n[d]; ++i) w[d].push_back(coords::volume_factor_integral(s.coordinates, d, s.face(d, i), s.face(d, i + 1)));
-    for_part_cells(mg.part(n), [&](std::size_t c, std::size_t, int i, int j, int k) {
-      if (mg.covered(n, c)) return;
-      const std::array<int, 3> ijk{i, j, k};
-      double vol = 1;
-      for (int d = 0; d < s.dimension; ++d) vol *= w[d][static_cast<std::size_t>(ijk[d])];
-      const Point3 X = cartesian_position(s, i, j, k);
-      m += src.part[static_cast<std::size_t>(n)][c] * vol;
-      q += unit.q(std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2])) * vol;
-    });
+    const auto n0 = static_cast<std::size_t>(s.n[0]), n1 = static_cast<std::size_t>(s.n[1]);
+    for (std::size_t row = b; row < e; ++row) {
+      const std::size_t local = row - first_row[static_cast<std::size_t>(n)];
+      const int j = static_cast<int>(local % n1), k = static_cast<int>(local / n1);
+      double* out = &partial[kPer * row];
+      visited += s.n[0];
+      for (int i = 0; i < s.n[0]; ++i) {
+        const std::size_t c = static_cast<std::size_t>(i) + n0 * local;
+        if (mg.covered(n, c)) continue;
+        const std::array<int, 3> ijk{i, j, k};
+        double vol = 1;
+        for (int d = 0; d < s.dimension; ++d) vol *= w[d][static_cast<std::size_t>(ijk[d])];
+        const Point3 X = cartesian_position(s, i, j, k);
+        const double r = std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]);
+        for (int a = 0; a < 3; ++a)
+          if (radius[a] > 0) {
+            out[a] += src[a].part[static_cast<std::size_t>(n)][c] * vol;
+            out[3 + a] += unit[a].q(r) * vol;
+          }
+      }
+    }
   }
-  return q > 0 ? m / q : 0;
+  if (nranks > 1) {
+    std::vector<int> counts(static_cast<std::size_t>(nranks)), displs(static_cast<std::size_t>(nranks));
+    for (int r = 0; r < nranks; ++r) {
+      counts[static_cast<std::size_t>(r)] = static_cast<int>(kPer * (cut(r + 1) - cut(r)));
+      displs[static_cast<std::size_t>(r)] = static_cast<int>(kPer * cut(r));
+    }
+    MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DOUBLE, partial.data(), counts.data(), displs.data(), MPI_DOUBLE, comm);
+    comm::count("xcfc_monopole_allgather", comm::Pattern::allgather, -1, 1,
+                static_cast<long long>(sizeof(double) * (partial.size() - kPer * (r1 - r0))));
+  }
+  std::array<double, 3> m{}, q{}, M{};
+  for (std::size_t row = 0; row < rows; ++row)
+    for (int a = 0; a < 3; ++a) {
+      m[a] += partial[kPer * row + static_cast<std::size_t>(a)];
+      q[a] += partial[kPer * row + 3 + static_cast<std::size_t>(a)];
+    }
+  for (int a = 0; a < 3; ++a) M[a] = radius[a] > 0 && q[a] > 0 ? m[a] / q[a] : 0.0;
+  return M;
 }
 
-// f += w * fn(X, r) over every cell of every part (covered cells included: they hold restrictions).
+// d_a chi_1 for chi_1 = sum_b M_b x_b p_b(r) (UnitCharge::p).
+inline double chi1_gradient(int a, const Point3& X, double r, const std::array<double, 3>& M, const std::array<UnitCharge, 3>& unit) {
+  double v = 0;
+  for (int b = 0; b < 3; ++b)
+    if (M[b] != 0) v += M[b] * ((a == b ? unit[b].p(r) : 0.0) + X[a] * X[b] * unit[b].k(r));
+  return v;
+}
+
+// fn(n, q, X, r) for this rank's share of the cells of every part (covered cells included: they
+// hold restrictions), X the Cartesian position; the caller completes what it wrote.
 template <class Fn>
-void add_cartesian(const CompositeMultigrid& mg, CompositeField& f, double w, Fn&& fn) {
+void for_share_positions(const CompositeMultigrid& mg, long long& visited, Fn&& fn) {
   for (int n = 0; n < mg.parts(); ++n) {
     const GridShape& s = mg.part(n).shape;
-    for_part_cells(mg.part(n), [&](std::size_t c, std::size_t, int i, int j, int k) {
+    const auto [b, e] = mg.share().range(n);
+    visited += static_cast<long long>(e - b);
+    for_share_cells(mg, n, [&](std::size_t c, std::size_t, int i, int j, int k) {
       const Point3 X = cartesian_position(s, i, j, k);
-      f.part[static_cast<std::size_t>(n)][c] += w * fn(X, std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
+      fn(static_cast<std::size_t>(n), c, X, std::sqrt(X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
     });
   }
-}
-template <class Fn>
-void add_radial(const CompositeMultigrid& mg, CompositeField& f, double w, Fn&& fn) {
-  add_cartesian(mg, f, w, [&](const Point3&, double r) { return fn(r); });
 }
 
-// B^a += w d_a chi_1 for every active component, chi_1 = sum_b M_b x_b p_b(r) (UnitCharge::p).
-void add_chi1_gradient(const CompositeMultigrid& mg, VectorField& B, double w, const std::array<double, 3>& M,
-                       const std::array<UnitCharge, 3>& unit) {
-  for (int a = 0; a < 3; ++a) {
-    if (!cartesian_component_active(mg.base_shape(), a)) continue;
-    add_cartesian(mg, B[a], w, [&](const Point3& X, double r) {
-      double v = 0;
-      for (int b = 0; b < 3; ++b)
-        if (M[b] != 0) v += M[b] * ((a == b ? unit[b].p(r) : 0.0) + X[a] * X[b] * unit[b].k(r));
-      return v;
-    });
-  }
+void complete_fields(const CompositeMultigrid& mg, const std::vector<CompositeField*>& fields) {
+  if (!mg.share().split() || fields.empty()) return;
+  std::vector<std::vector<std::vector<double>>*> parts;
+  for (CompositeField* f : fields) parts.push_back(&f->part);
+  mg.share().complete(parts);
 }
 
 }  // namespace
@@ -326,43 +385,68 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
   // r^-2 (solved for B - M g). Its divergence's potential chi_1 (UnitCharge::p) tends to -M x / (8 pi r),
   // which a 1/r condition on chi cannot hold: chi is solved for chi - chi_1 (source div(B - M g)) and
   // warm.B keeps B - grad chi_1 / 4, so that X = B - grad chi / 4 of the kept potentials still holds.
-  std::array<double, 3> M{};
+  std::array<double, 3> M{}, radius{};
   std::array<UnitCharge, 3> unit{UnitCharge(1.0), UnitCharge(1.0), UnitCharge(1.0)};
   std::array<CompositeEquation, 3> eqs;
+  bool active[3];
   for (int a = 0; a < 3; ++a) {
     if (warm.B[a].part.size() != zero.part.size()) warm.B[a] = zero;
-    if (!cartesian_component_active(s, a)) continue;
+    active[a] = cartesian_component_active(s, a);
+    if (!active[a]) continue;
     eqs[a].boundary = cartesian_component_equation(s, a);
     eqs[a].s0 = src[a];
-    const double radius = monopole_radius(s, eqs[a].boundary);
-    unit[a] = UnitCharge(radius > 0 ? radius : 1.0);
-    M[a] = radius > 0 ? monopole_weight(mg, src[a], unit[a]) : 0.0;
+    radius[a] = monopole_radius(s, eqs[a].boundary);
+    unit[a] = UnitCharge(radius[a] > 0 ? radius[a] : 1.0);
   }
+  if (radius[0] > 0 || radius[1] > 0 || radius[2] > 0) M = monopole_weights(mg, src, radius, unit, stats.monopole_cells);
   const bool split = M[0] != 0 || M[1] != 0 || M[2] != 0;
-  if (split) add_chi1_gradient(mg, warm.B, 0.25, M, unit);
+  if (split) {
+    // B += grad chi_1 / 4 - M g, s0 -= M q: on this rank's share, then completed.
+    for_share_positions(mg, stats.monopole_cells, [&](std::size_t n, std::size_t c, const Point3& X, double r) {
+      for (int a = 0; a < 3; ++a) {
+        if (!active[a]) continue;
+        double& b = warm.B[a].part[n][c];
+        b += 0.25 * chi1_gradient(a, X, r, M, unit);
+        if (M[a] != 0) {
+          eqs[a].s0.part[n][c] += -M[a] * unit[a].q(r);
+          b += -M[a] * unit[a].g(r);
+        }
+      }
+    });
+    std::vector<CompositeField*> done;
+    for (int a = 0; a < 3; ++a)
+      if (active[a]) done.push_back(&warm.B[a]);
+    for (int a = 0; a < 3; ++a)
+      if (M[a] != 0) done.push_back(&eqs[a].s0);
+    complete_fields(mg, done);
+  }
   for (int a = 0; a < 3; ++a) {
-    if (!cartesian_component_active(s, a)) {
+    if (!active[a]) {
       warm.B[a] = zero;
       stats.component[a].converged = true;
       continue;
     }
-    CompositeEquation& eq = eqs[a];
-    if (M[a] != 0) {
-      add_radial(mg, eq.s0, -M[a], [&](double r) { return unit[a].q(r); });
-      add_radial(mg, warm.B[a], -M[a], [&](double r) { return unit[a].g(r); });
-    }
-    stats.component[a] = mg.solve(eq, warm.B[a], settings);
+    stats.component[a] = mg.solve(eqs[a], warm.B[a], settings);
   }
   CompositeEquation chi;
   chi.boundary = chi_equation();
   chi.s0 = divergence(mg, to_coordinate(mg, warm.B));
-  for (int a = 0; a < 3; ++a)
-    if (M[a] != 0) add_radial(mg, warm.B[a], M[a], [&](double r) { return unit[a].g(r); });
-  if (split) add_chi1_gradient(mg, warm.B, -0.25, M, unit);
+  if (split) {
+    // B += M g - grad chi_1 / 4: the kept potentials (see above).
+    for_share_positions(mg, stats.monopole_cells, [&](std::size_t n, std::size_t c, const Point3& X, double r) {
+      for (int a = 0; a < 3; ++a) {
+        if (!active[a]) continue;
+        double& b = warm.B[a].part[n][c];
+        if (M[a] != 0) b += M[a] * unit[a].g(r);
+        b += -0.25 * chi1_gradient(a, X, r, M, unit);
+      }
+    });
+    complete_fields(mg, {&warm.B[0], &warm.B[1], &warm.B[2]});
+  }
   const VectorField B_up = to_coordinate(mg, warm.B);
   stats.chi = mg.solve(chi, warm.chi, settings);
   // X^i = B^i - f^ii d_i chi / 4 (centred differences).
-  const CompositeField gchi = mg.with_ghosts(chi.boundary, warm.chi);
+  const CompositeField gchi = mg.with_ghosts(chi.boundary, warm.chi, true);
   X_up = B_up;
   for (int n = 0; n < mg.parts(); ++n) {
     const PartGeometry& g = mg.part(n);

@@ -183,7 +183,7 @@ void XcfcSolver::solve_shift(const CompositeField& E, const VectorField& S_dn, X
   mg_.complete({&w});
   ScalarEquation weq;
   weq.far_value = 1.0;
-  const CompositeField gw = mg_.with_ghosts(weq, w);
+  const CompositeField gw = mg_.with_ghosts(weq, w, true);
   VectorField src;
   for (auto& c : src) c = mg_.field();
   for (int n = 0; n < mg_.parts(); ++n) {

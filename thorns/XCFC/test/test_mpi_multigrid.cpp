@@ -15,6 +15,7 @@
 #include "manufactured.hpp"
 #include "refined_layouts.hpp"
 #include "same_bits.hpp"
+#include "remnant/comm_counters.hpp"
 
 namespace {
 
@@ -233,7 +234,12 @@ void check_composite(const char* name, const GridShape& base, std::array<int, 3>
     set.tolerance = 1e-9;
     set.full_multigrid = nonlinear;
     CompositeField a = serial.field(1.0), b = serial.field(1.0);
+    comm::reset();
     const SolveStats sa = serial.solve(eq, a, set), sb = parallel.solve(eq, b, set);
+    const comm::Tally tier_exchange = [&] {
+      const auto it = comm::tallies().find(comm::Key{"mg_tier_exchange", static_cast<int>(boxes.size())});
+      return it == comm::tallies().end() ? comm::Tally{} : it->second;
+    }();
     EXPECT_TRUE(sa.converged) << name;
     EXPECT_EQ(sa.cycles, sb.cycles) << name;
     EXPECT_TRUE(same_bits(sa.history, sb.history)) << name;
@@ -257,12 +263,26 @@ void check_composite(const char* name, const GridShape& base, std::array<int, 3>
     if (nranks == 2) EXPECT_NEAR(double(mine) / double(total), 0.5, 0.1) << name;
     // The patch ghosts are filled for this rank's units only: before each relaxation pass, and for
     // the residuals and restrictions (each rank restricts its own patches into the coarse covered
-    // cells, the leaf residual is reduced from each rank's patches): measured 0.51-0.52 of one
-    // rank's on 2 ranks (0.65-0.66 when the residuals and transfers filled every patch).
+    // cells, the leaf residual is reduced from each rank's patches, the coarse right-hand side
+    // fills only the parents of its own patches): measured 0.48-0.49 of one rank's on 2 ranks
+    // (0.51-0.52 when every rank filled the whole coarser tier for the right-hand side, 0.65-0.66
+    // when the residuals and transfers filled every patch).
     EXPECT_GT(sa.ghost_entries, 0) << name;
     if (nranks == 1) EXPECT_EQ(sa.ghost_entries, sb.ghost_entries) << name;
-    if (nranks == 2) EXPECT_LE(double(sb.ghost_entries), 0.55 * double(sa.ghost_entries)) << name;
+    if (nranks == 2) EXPECT_LE(double(sb.ghost_entries), 0.50 * double(sa.ghost_entries)) << name;
     if (rank == 0) std::printf("composite %-14s patch ghosts filled by rank 0 / one rank: %.3f\n", name, double(sb.ghost_entries) / double(sa.ghost_entries));
+    // Point relaxation (3D Cartesian): after a red-black pass only that colour's cells are
+    // gathered, so the finest tier's exchanges carry on average well under the other rank's half of
+    // the tier (measured 0.278; 0.500 when every pass sent whole patches).
+    if (nranks == 2 && base.dimension == 3 && base.coordinates == CoordinateSystem::cartesian) {
+      long long tier_cells = 0;
+      for (int n = 0; n < parallel.parts(); ++n)
+        if (parallel.part(n).level == static_cast<int>(boxes.size())) tier_cells += static_cast<long long>(parallel.part(n).shape.cells());
+      ASSERT_GT(tier_exchange.calls, 0) << name;
+      const double per_call = double(tier_exchange.bytes) / double(tier_exchange.calls) / (8.0 * double(tier_cells));
+      EXPECT_LT(per_call, 0.4) << name;
+      if (rank == 0) std::printf("composite %-14s finest tier gathered per exchange by rank 0: %.3f of the tier\n", name, per_call);
+    }
     if (rank == 0)
       std::printf("composite %-14s %s: %d parts, %d V-cycles, bits equal to one rank; finest level relaxed by rank 0: %.3f; "
                   "max error %.2e\n",

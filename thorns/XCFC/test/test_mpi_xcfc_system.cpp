@@ -8,6 +8,7 @@
 #include <mpi.h>
 
 #include <cmath>
+#include <tuple>
 
 #include "XCFC/xcfc_system.hpp"
 #include "manufactured.hpp"
@@ -26,8 +27,9 @@ struct Sources {
   VectorField S_dn;
 };
 
-// A rotating, contracting blob: E~ and S~ Gaussian, S~_j with toroidal and poloidal parts.
-Sources sources(CompositeMultigrid& mg) {
+// A rotating, contracting blob: E~ and S~ Gaussian, S~_j with toroidal and poloidal parts, and a
+// drift (a net momentum along x: the vector solves' monopole) of `drift`.
+Sources sources(CompositeMultigrid& mg, double drift = 0.0) {
   Sources src{mg.field(), mg.field(), {mg.field(), mg.field(), mg.field()}};
   for (int n = 0; n < mg.parts(); ++n) {
     const GridShape& s = mg.part(n).shape;
@@ -36,7 +38,7 @@ Sources sources(CompositeMultigrid& mg) {
       const double g = std::exp(-0.4 * (X[0] * X[0] + X[1] * X[1] + X[2] * X[2]));
       src.E.part[n][q] = 2e-2 * g;
       src.S_trace.part[n][q] = 3e-3 * g;
-      const Point3 S = coords::covector_from_cartesian(s.coordinates, x, Point3{-1e-3 * X[0] * g - 2e-3 * X[1] * g,
+      const Point3 S = coords::covector_from_cartesian(s.coordinates, x, Point3{-1e-3 * X[0] * g - 2e-3 * X[1] * g + drift * g,
                                                                                  -1e-3 * X[1] * g + 2e-3 * X[0] * g,
                                                                                  -1e-3 * X[2] * g});
       for (int a = 0; a < 3; ++a) src.S_dn[a].part[n][q] = S[a];
@@ -46,9 +48,9 @@ Sources sources(CompositeMultigrid& mg) {
 }
 
 // Solves the whole sequence with `solver`; returns the state.
-XcfcState solve(XcfcSolver& solver, XcfcStats& stats) {
+XcfcState solve(XcfcSolver& solver, XcfcStats& stats, double drift) {
   CompositeMultigrid& mg = solver.multigrid();
-  const Sources src = sources(mg);
+  const Sources src = sources(mg, drift);
   XcfcState st;
   SolveSettings set;
   set.tolerance = 1e-10;
@@ -58,9 +60,9 @@ XcfcState solve(XcfcSolver& solver, XcfcStats& stats) {
   return st;
 }
 
-void check(const char* name, XcfcSolver& serial, XcfcSolver& parallel) {
+void check(const char* name, XcfcSolver& serial, XcfcSolver& parallel, double drift = 0.0) {
   XcfcStats ss, sp;
-  const XcfcState a = solve(serial, ss), b = solve(parallel, sp);
+  const XcfcState a = solve(serial, ss, drift), b = solve(parallel, sp, drift);
   EXPECT_TRUE(ss.psi.converged && ss.alpha_psi.converged && ss.X.converged() && ss.beta.converged()) << name;
   EXPECT_EQ(ss.psi.cycles, sp.psi.cycles) << name;
   EXPECT_EQ(ss.alpha_psi.cycles, sp.alpha_psi.cycles) << name;
@@ -112,6 +114,19 @@ void check(const char* name, XcfcSolver& serial, XcfcSolver& parallel) {
   if (rank == 0)
     std::printf("xCFC system %-16s %d parts, bits equal to one rank; pointwise cells computed by rank 0 / one rank: %.3f\n",
                 name, parallel.multigrid().parts(), work);
+  // The vector solves' monopole (only with a drift: a net momentum): its sums over the leaf cells
+  // go by rows split between the ranks and its charge terms by share, so the ranks' cells add up
+  // to one rank's and each of 2 visits half (a rank summing or charging every cell visits all).
+  if (drift == 0.0) return;
+  for (const auto& [what, one, own] : {std::tuple{"X", ss.X.monopole_cells, sp.X.monopole_cells},
+                                        std::tuple{"beta", ss.beta.monopole_cells, sp.beta.monopole_cells}}) {
+    long long sum = 0;
+    MPI_Allreduce(&own, &sum, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+    EXPECT_GT(one, 0) << name << ": " << what << " has no monopole";
+    EXPECT_EQ(sum, one) << name << ": " << what;
+    if (nranks == 2) EXPECT_NEAR(double(own) / double(one), 0.5, 0.02) << name << ": " << what;
+    if (rank == 0) std::printf("xCFC system %-16s %s monopole cells visited by rank 0 / one rank: %.3f\n", name, what, double(own) / double(one));
+  }
 }
 
 TEST(XCFCMultigridMPI, SystemSpherical2D) {
@@ -127,6 +142,17 @@ TEST(XCFCMultigridMPI, SystemCompositeCartesian3D) {
   const CompositeLayout lay = nested_layout(s, {4, 4, 4}, {{{{0, 2}, {0, 2}, {0, 2}}}});
   XcfcSolver serial(lay), parallel(lay, MPI_COMM_WORLD);
   check("cartesian 3D AMR", serial, parallel);
+}
+
+// A half space (mirror at z = 0, outer faces elsewhere) refined at the centre, with a drift: B^x and
+// B^y carry a monopole (even at the mirror), split off by the unit charge.
+TEST(XCFCMultigridMPI, SystemMonopoleSplitBetweenRanks) {
+  using B = Boundary;
+  const GridShape s = make_shape(CoordinateSystem::cartesian, 3, {16, 16, 8}, {-4, -4, 0}, {4, 4, 4},
+                                 {{{B::outer, B::outer}, {B::outer, B::outer}, {B::reflect, B::outer}}});
+  const CompositeLayout lay = nested_layout(s, {4, 4, 4}, {{{{-1, 1}, {-1, 1}, {0, 1}}}});
+  XcfcSolver serial(lay), parallel(lay, MPI_COMM_WORLD);
+  check("half space drift", serial, parallel, 2e-3);
 }
 
 }  // namespace

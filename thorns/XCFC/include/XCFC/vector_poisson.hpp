@@ -23,6 +23,9 @@ struct VectorPotentials {
 
 struct VectorSolveStats {
   SolveStats component[3], chi;
+  // Cells this rank visited in the monopole's sums and charge terms (each rank its rows and its
+  // share: about 1/N of one rank's on N ranks).
+  long long monopole_cells = 0;
   int cycles() const { return component[0].cycles + component[1].cycles + component[2].cycles + chi.cycles; }
   double residual() const;  // largest relative residual of the four solves
   bool converged() const;

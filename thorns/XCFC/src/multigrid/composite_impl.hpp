@@ -56,11 +56,9 @@ struct CompositeMultigrid::Impl {
 
   Tier::Split split(const Tier& T, std::vector<std::vector<int>> units) const { return make_split(T, std::move(units), nranks); }
   std::pair<std::size_t, std::size_t> mine(const Tier::Split& S) const { return owned_units(S, rank); }
-  void exchange(Tier& T, const Tier::Split& S) {
-    exchange_units(T, S, comm, rank, nranks);
-    if (nranks > 1)
-      comm::count("mg_tier_exchange", comm::Pattern::allgather, static_cast<int>(&T - tiers.data()), 1,
-                  static_cast<long long>(sizeof(double)) * (S.displs.back() + S.counts.back() - S.counts[static_cast<std::size_t>(rank)]));
+  void exchange(Tier& T, const Tier::Split& S, int colour = -1) {
+    const long long bytes = exchange_units(T, S, comm, rank, nranks, colour);
+    if (nranks > 1) comm::count("mg_tier_exchange", comm::Pattern::allgather, static_cast<int>(&T - tiers.data()), 1, bytes);
   }
 
   int locate(int t, const Cell& I) const { return xcfc::locate(tiers[static_cast<std::size_t>(t)], I); }
@@ -93,7 +91,14 @@ struct CompositeMultigrid::Impl {
   // mine: only the patches of this rank's units of that split (the ghosts its relaxation reads; a
   // recipe reads interior values only, so the filled ghosts have the bits of a whole fill).
   void fill(int t, const ScalarEquation& eq, const std::array<double, 64>& par, const Tier::Split* mine = nullptr);
+  // The parents (patches of tier t - 1) of this rank's patches of tier t >= 1, as a split whose units
+  // (one patch each) are all this rank's: for fill.
+  const Tier::Split& own_parents(int t);
+  std::vector<Tier::Split> parents_of_own;  // per tier, built on first use
+  // A split whose units are `patches`, all owned by this rank (fill of just these patches).
+  Tier::Split only_these(const std::vector<int>& patches) const;
   long long ghosts_filled = 0;  // by this rank in the current solve (recipes evaluated)
+  std::vector<std::vector<const double*>> fill_arrays;  // fill's u of each (tier, patch)
 
   // Relaxation of a tier's patches: red-black points (1D, 3D Cartesian) or zebra lines along runs of
   // patches in every direction (2D, 3D cylindrical and spherical; a row split into patches is one

@@ -39,6 +39,7 @@ CompositeMultigrid::Impl::Impl(const CompositeLayout& l, MPI_Comm c, MultigridSt
     MPI_Comm_size(comm, &nranks);
   }
   tiers = build_tiers(l, nranks);
+  parents_of_own.resize(tiers.size());
   const int L = l.finest();
   for (int t = 0; t <= L; ++t)
     for (std::size_t p = 0; p < tiers[static_cast<std::size_t>(t)].patches.size(); ++p) {
@@ -327,6 +328,7 @@ CompositeField CompositeMultigrid::field(double value) const {
 }
 
 const CellShare& CompositeMultigrid::share(bool ghosted) const { return ghosted ? impl_->ghosted_share : impl_->share; }
+MPI_Comm CompositeMultigrid::comm() const { return impl_->comm; }
 void CompositeMultigrid::complete(std::initializer_list<CompositeField*> fields, bool ghosted) const {
   const CellShare& s = share(ghosted);
   if (!s.split()) return;
@@ -349,14 +351,34 @@ void CompositeMultigrid::fill_covered(CompositeField& f) const {
   }
 }
 
-CompositeField CompositeMultigrid::with_ghosts(const ScalarEquation& boundary, const CompositeField& u) {
+CompositeField CompositeMultigrid::with_ghosts(const ScalarEquation& boundary, const CompositeField& u, bool share_only) {
   Impl& m = *impl_;
   if (!m.refined()) return {{m.base.with_ghosts(boundary, u.part.at(0))}};
   const auto par = parity_factors(boundary);
   m.load(u, false);
   m.restrict_solution(boundary, par);
   CompositeField out;
-  for (int t = 0; t < static_cast<int>(m.tiers.size()); ++t) m.fill(t, boundary, par);
+  std::vector<int> touched;
+  for (int t = 0; t < static_cast<int>(m.tiers.size()); ++t) {
+    if (!share_only || m.nranks == 1) {
+      m.fill(t, boundary, par);
+      continue;
+    }
+    // Only the parts that this rank's shares (interior or ghosted cells) reach.
+    touched.clear();
+    for (std::size_t p = 0; p < m.tiers[static_cast<std::size_t>(t)].patches.size(); ++p) {
+      const int n = static_cast<int>(m.part_index(t, p));
+      const auto [b, e] = m.share.range(n);
+      const auto [gb, ge] = m.ghosted_share.range(n);
+      if (b < e || gb < ge) touched.push_back(static_cast<int>(p));
+    }
+    if (t == 0) {
+      if (!touched.empty()) m.fill(0, boundary, par);
+    } else {
+      const Tier::Split S = m.only_these(touched);
+      m.fill(t, boundary, par, &S);
+    }
+  }
   for (const auto& [t, p] : m.part_of) out.part.push_back(m.tiers[static_cast<std::size_t>(t)].patches[static_cast<std::size_t>(p)].u);
   return out;
 }

@@ -32,23 +32,72 @@ Tier::Split make_split(const Tier& T, std::vector<std::vector<int>> units, int n
   return S;
 }
 
-void exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank, int nranks) {
-  if (nranks == 1) return;
-  std::vector<double> mine_buf, all(static_cast<std::size_t>(S.displs.back() + S.counts.back()));
+namespace {
+// f(ghosted offset) for the interior cells of a patch in storage order; colour >= 0: only the cells
+// with (i + j + k) % 2 == colour (those red_black_pass updates).
+template <class F>
+void for_exchanged_cells(const Level& P, int colour, F&& f) {
+  if (colour < 0) {
+    for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { f(static_cast<std::size_t>(g)); });
+    return;
+  }
+  for (int k = 0; k < P.shape.n[2]; ++k)
+    for (int j = 0; j < P.shape.n[1]; ++j) {
+      const int i0 = (j + k + colour) & 1;
+      auto g = static_cast<std::size_t>(P.at(i0, j, k));
+      for (int i = i0; i < P.shape.n[0]; i += 2, g += 2) f(g);
+    }
+}
+std::size_t exchanged_cells(const Level& P, int colour) {
+  const std::size_t n = P.cells();
+  if (colour < 0) return n;
+  return n % 2 == 0 ? n / 2 : (colour == 0 ? (n + 1) / 2 : n / 2);  // a box starts at an even cell
+}
+}  // namespace
+
+long long exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank, int nranks, int colour) {
+  if (nranks == 1) return 0;
+  // Buffers kept between calls (sized once, not zero-filled per pass), and only the partners'
+  // units unpacked: a pass costs this rank its own cells to pack and the others' to unpack. After
+  // a red-black pass of one colour only that colour's cells changed: only they are sent.
+  const int* counts = S.counts.data();
+  const int* displs = S.displs.data();
+  if (colour >= 0) {
+    auto& cc = S.colour_counts[static_cast<std::size_t>(colour & 1)];
+    auto& cd = S.colour_displs[static_cast<std::size_t>(colour & 1)];
+    if (cc.empty()) {  // once per split and colour
+      cc.assign(static_cast<std::size_t>(nranks), 0);
+      cd.assign(static_cast<std::size_t>(nranks), 0);
+      for (int r = 0; r < nranks; ++r) {
+        for (std::size_t u = S.first[static_cast<std::size_t>(r)]; u < S.first[static_cast<std::size_t>(r) + 1]; ++u)
+          for (int p : S.units[u]) cc[static_cast<std::size_t>(r)] += static_cast<int>(exchanged_cells(T.patches[static_cast<std::size_t>(p)], colour));
+        if (r > 0) cd[static_cast<std::size_t>(r)] = cd[static_cast<std::size_t>(r) - 1] + cc[static_cast<std::size_t>(r) - 1];
+      }
+    }
+    counts = cc.data();
+    displs = cd.data();
+  }
+  const auto total = static_cast<std::size_t>(displs[nranks - 1] + counts[nranks - 1]);
+  if (T.exchange_buffer.size() < total) T.exchange_buffer.resize(total);
+  double* all = T.exchange_buffer.data();
   const auto [u0, u1] = owned_units(S, rank);
+  double* mine = all + displs[rank];
   for (std::size_t u = u0; u < u1; ++u)
     for (int p : S.units[u]) {
       const Level& P = T.patches[static_cast<std::size_t>(p)];
-      for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { mine_buf.push_back(P.u[static_cast<std::size_t>(g)]); });
+      for_exchanged_cells(P, colour, [&](std::size_t g) { *mine++ = P.u[g]; });
     }
-  MPI_Allgatherv(mine_buf.data(), static_cast<int>(mine_buf.size()), MPI_DOUBLE, all.data(), S.counts.data(), S.displs.data(),
-                 MPI_DOUBLE, comm);
-  std::size_t at = 0;
-  for (const auto& unit : S.units)
-    for (int p : unit) {
-      Level& P = T.patches[static_cast<std::size_t>(p)];
-      for_cells(P, full_range(P), [&](std::size_t, std::ptrdiff_t g) { P.u[static_cast<std::size_t>(g)] = all[at++]; });
-    }
+  MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_DOUBLE, all, counts, displs, MPI_DOUBLE, comm);
+  for (int r = 0; r < nranks; ++r) {
+    if (r == rank) continue;
+    const double* at = all + displs[r];
+    for (std::size_t u = S.first[static_cast<std::size_t>(r)]; u < S.first[static_cast<std::size_t>(r) + 1]; ++u)
+      for (int p : S.units[u]) {
+        Level& P = T.patches[static_cast<std::size_t>(p)];
+        for_exchanged_cells(P, colour, [&](std::size_t g) { P.u[g] = *at++; });
+      }
+  }
+  return static_cast<long long>(sizeof(double)) * static_cast<long long>(total - static_cast<std::size_t>(counts[rank]));
 }
 
 void build_runs(Tier& T) {

@@ -48,9 +48,12 @@ struct Tier {
     std::vector<std::vector<int>> units;  // patches of each unit
     std::vector<std::size_t> first;       // first unit of each rank (nranks + 1 entries)
     std::vector<int> counts, displs;      // doubles per rank
+    // The same for one red-black colour's cells (exchange_units), built on first use.
+    mutable std::array<std::vector<int>, 2> colour_counts, colour_displs;
   };
   Split points;
   std::array<Split, 3> lines;
+  std::vector<double> exchange_buffer;  // exchange_units' gather, kept between passes
 };
 
 
@@ -60,8 +63,10 @@ Tier::Split make_split(const Tier& T, std::vector<std::vector<int>> units, int n
 inline std::pair<std::size_t, std::size_t> owned_units(const Tier::Split& S, int rank) {
   return {S.first[static_cast<std::size_t>(rank)], S.first[static_cast<std::size_t>(rank) + 1]};
 }
-// After a pass: every rank receives the patch interiors its partners updated (MPI_Allgatherv).
-void exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank, int nranks);
+// After a pass: every rank receives the patch interiors its partners updated (MPI_Allgatherv);
+// colour >= 0: only the cells of that red-black colour ((i + j + k) % 2 in the patch). Returns the
+// bytes this rank received.
+long long exchange_units(Tier& T, const Tier::Split& S, MPI_Comm comm, int rank, int nranks, int colour = -1);
 // The runs of every direction of a tier (2D, and 3D cylindrical or spherical), and a 3D spherical
 // tier's origin shells.
 void build_runs(Tier& T);

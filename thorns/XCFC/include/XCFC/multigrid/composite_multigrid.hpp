@@ -118,12 +118,15 @@ class CompositeMultigrid {
   // The split of pointwise work over the interior (or ghosted, PartGeometry::at) cells of all parts
   // between the ranks, and the fields made complete again after it (cell_share.hpp).
   const CellShare& share(bool ghosted = false) const;
+  MPI_Comm comm() const;
   void complete(std::initializer_list<CompositeField*> fields, bool ghosted = false) const;
   // Covered cells take the volume-weighted mean of their children (finest level first).
   void fill_covered(CompositeField& f) const;
   // Ghosted copies of the parts (PartGeometry::at) with the ghosts filled from the equation's
   // boundary data, neighbours and coarser levels; covered cells first take the finer values.
-  CompositeField with_ghosts(const ScalarEquation& boundary, const CompositeField& u);
+  // share_only: the ghosts only of the parts that this rank's shares (share(), share(true)) reach,
+  // the others' left as they are (for loops over this rank's share; the interiors are all set).
+  CompositeField with_ghosts(const ScalarEquation& boundary, const CompositeField& u, bool share_only = false);
 
   // Solves in place (u: warm start, all levels). Convergence on max |residual| over the leaf cells
   // relative to the max of the source terms there; full_multigrid: the base problem (with the fine
