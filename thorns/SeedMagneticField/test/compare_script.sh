@@ -50,6 +50,10 @@ grep -q "E_mag: .*order 2.00 (from three resolutions) -> 3D resolution error 1.4
 # The 2D run is 0.02 t/200 off the exact history, the 3D fine run 0.0703 t/200: 0.0503 apart at the end.
 grep -q "cyl_good .*rho_c(0) = 1.280000e-03 (+0.000e+00 vs 3D), max|Delta rho_c/rho_c(0)| = 5.031e-02 at 0.985 ms.*: agree" <<<"$out" || fail "rho_c verdict"
 # Whole-star E_mag(0): 2D 5e-8 * 2 against 3D 5e-8 * 8: -0.75.
+# The extrapolated 3D history is the exact one: the 2D run's own error 0.02 (rho_c), 0.04 (E_mag) at the end;
+# pointwise |Delta| / error = (0.07031 - 0.02) / 0.07031 = 0.72 (rho_c), the same for E_mag.
+grep -q "max|cyl_good - extrapolated 3D| = 2.000e-02; largest |Delta(t)| / error(t) after 0.1 t_end: 0.72" <<<"$out" || fail "rho_c extrapolation"
+grep -q "max|cyl_good - extrapolated 3D| = 4.000e-02; largest |Delta(t)| / error(t) after 0.1 t_end: 0.72" <<<"$out" || fail "E_mag extrapolation"
 grep -q "cyl_good .*E_mag(0) of the star = 1.000000e-07 (-7.500e-01 vs 3D), max|Delta E_mag/E_mag(0)| = 1.006e-01.*: agree" <<<"$out" || fail "E_mag verdict, whole-star E_mag(0)"
 
 out=$("$tool" --cart "$tmp/cart_fine/analysis.tsv" --dx 0.375 --cart "$tmp/cart_coarse/analysis.tsv" --dx 0.75 "$tmp/cyl_bad/analysis.tsv" 2>&1)
