@@ -183,7 +183,8 @@ template <bool Mhd, bool Shift>
 // The static pressure part of the momentum source along d of cell o (psi^6 left out, as the sources),
 // replaced by the flux divergence of the cell's own isentropic equilibrium pressure at its two faces
 // (well_balanced.hpp): the correction to add to src[kS1 + d]. Zero where that equilibrium's h - 1 at
-// a face leaves a factor 2 of the cell's (the atmosphere and the surface keep the plain sources).
+// a face leaves a factor 2 of the cell's (the atmosphere and the surface keep the plain sources), or
+// where a neighbour's K differs by more than 2x (hot, diluted cells outside a star).
 inline double well_balanced_correction(const WellBalancedSources& wb, const Field* prim, const Field* met,
                                        std::ptrdiff_t o, std::ptrdiff_t s, const FluidState& fs, double psi,
                                        double alpha, double dalpha, double dpsi, double area_minus,
@@ -193,7 +194,9 @@ inline double well_balanced_correction(const WellBalancedSources& wb, const Fiel
   const double* press = prim[Prim::idx::press].origin + o;
   const double* lapse = met[Metric::idx::alpha].origin + o;
   for (int m = -1; m <= 1; ++m)
-    if (!equilibrium_cell(is, wb.faces, rho[m * s], press[m * s], lapse, s, m)) return 0.0;
+    if (!equilibrium_cell(is, wb.faces, rho[m * s], press[m * s], lapse, s, m) ||
+        !same_isentrope(is, rho[0], press[0], rho[m * s], press[m * s]))
+      return 0.0;
   const double q = fs.h * alpha, K = is.entropy(fs.rho, fs.press);
   const FaceLapsePsi6 fm =
       cell_face_metric(wb.faces, met[Metric::idx::alpha].origin + o, met[Metric::idx::psi].origin + o, s);

@@ -93,14 +93,24 @@ inline double metric_face(MetricFaceInterpolation m, const double* a, std::ptrdi
 
 // Whether cell m of a line (rho, p, cell lapse alpha; a: the line's lapse, stride s) is in the
 // well-balanced region: its own equilibrium is close (IdealIsentrope::close) at both its faces. A
-// face is treated well-balanced only between two such cells, and a cell's sources only where it
-// and both neighbours are: the switch to the plain scheme at a surface is the same in both passes
+// face is treated well-balanced only between two such cells on one isentrope (same_isentrope), and
+// a cell's sources only where it and both neighbours are: the switch to the plain scheme at a surface is the same in both passes
 // and never leaves a face with one balanced and one plain side.
 inline bool equilibrium_cell(const IdealIsentrope& is, MetricFaceInterpolation faces, double rho, double p,
                              const double* a, std::ptrdiff_t s, int m) {
   const double h = is.enthalpy(rho, p), q = h * a[m * s];
   const double hm = q / metric_face(faces, a, s, m), hp = q / metric_face(faces, a, s, m + 1);
   return IdealIsentrope::close(hm, h) && IdealIsentrope::close(hp, h) && is.entropy(rho, p) > 0.0;
+}
+
+// Whether two neighbouring cells lie on one isentrope (K within a factor 2): the equilibrium has a
+// single K, and h alone does not say so: hot, diluted cells just outside a star (h - 1 ~ 0.1-1, K
+// orders above the star's) pass IdealIsentrope::close, and balancing them against a star cell made
+// the 3D octant's surface cells D < 0 or eps ~ 1e3 (issue 15). Faces and sources use the plain
+// scheme across such a jump.
+inline bool same_isentrope(const IdealIsentrope& is, double rho_a, double p_a, double rho_b, double p_b) {
+  const double ka = is.entropy(rho_a, p_a), kb = is.entropy(rho_b, p_b);
+  return ka <= 2.0 * kb && kb <= 2.0 * ka;
 }
 
 // After the plain reconstruction and set_face_metric of an ideal-gas line (thermal slot = p): the face
@@ -124,7 +134,7 @@ inline void well_balanced_faces(const IdealIsentrope& is, Reconstruction rec, Me
   bool lower = equilibrium_cell(is, faces, rho[-1], p[-1], alpha, s, -1);
   for (int f = 0; f <= n; ++f) {
     const bool upper = equilibrium_cell(is, faces, rho[f], p[f], alpha, s, f);
-    const bool both = lower && upper;
+    const bool both = lower && upper && same_isentrope(is, rho[f - 1], p[f - 1], rho[f], p[f]);
     lower = upper;
     if (!both) continue;
     const double inv_alpha = 1.0 / L.face.alpha[f];

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "EOS/eos.hpp"
 #include "EOS/ideal_gas.hpp"
@@ -21,6 +22,7 @@
 #include "remnant/cell_geometry.hpp"
 #include "remnant/coordinates.hpp"
 #include "rhs.hpp"
+#include "well_balanced.hpp"
 
 namespace {
 
@@ -150,4 +152,41 @@ TEST(WellBalanced, NeedsTheIdealGas) {
     EXPECT_NE(m.find("GRMHD::well_balanced = isentropic needs EOS::type = ideal_gas"), std::string::npos) << m;
     EXPECT_NE(m.find("run.yaml:"), std::string::npos) << m;
   }
+}
+
+// A face is in the isentropic equilibrium only between cells of (nearly) one K: hot, diluted cells
+// just outside a star have an h - 1 that passes IdealIsentrope::close (the equilibrium was judged by
+// h alone) but a K many orders above the star's. The 3D octant (issue 15) turned such cells into
+// ε ~ 1e3 fluid and stopped; here the face between a star cell (K = 100) and a cell with the same h
+// and K = 1e4 must keep its plain states, while faces inside the star stay well-balanced.
+TEST(WellBalanced, FaceBetweenDifferentIsentropesKeepsThePlainStates) {
+  constexpr int n = 8, ng = 3;
+  const IdealIsentrope is{kGamma};
+  LineScratch<kNumRecHydro, kNumCons> L;
+  L.ensure(n, ng);
+  std::vector<double> alpha(n + 2 * ng, 0.8);
+  const double h = 1.02;
+  auto K_of = [](int m) { return m < 4 ? kK : (m == 4 ? 1e4 : 1e7); };  // star up to cell 3, then hot and dilute
+  for (int m = -ng; m < n + ng; ++m) {
+    double rho = 0, p = 0;
+    ASSERT_TRUE(is.state(h, K_of(m), rho, p));
+    L.cell[kRecRho][m] = rho;
+    L.cell[kRecThermal][m] = p;
+  }
+  for (int f = 0; f <= n; ++f) {  // plain states: first order, the cells' own values
+    L.left[kRecRho][f] = L.cell[kRecRho][f - 1];
+    L.left[kRecThermal][f] = L.cell[kRecThermal][f - 1];
+    L.right[kRecRho][f] = L.cell[kRecRho][f];
+    L.right[kRecThermal][f] = L.cell[kRecThermal][f];
+    L.face.alpha[f] = 0.8;
+  }
+  well_balanced_faces(is, Reconstruction::ppm, MetricFaceInterpolation::linear, alpha.data() + ng, 1, n, ng, L);
+  for (int f : {4, 5}) {  // K 100 | 1e4 and 1e4 | 1e7
+    EXPECT_EQ(L.left[kRecRho][f], L.cell[kRecRho][f - 1]) << "face " << f;
+    EXPECT_EQ(L.right[kRecRho][f], L.cell[kRecRho][f]) << "face " << f;
+    EXPECT_EQ(L.left[kRecThermal][f], L.cell[kRecThermal][f - 1]) << "face " << f;
+    EXPECT_EQ(L.right[kRecThermal][f], L.cell[kRecThermal][f]) << "face " << f;
+  }
+  // Inside the star the isentrope's state (the same uniform one, to round-off).
+  EXPECT_NEAR(L.left[kRecRho][2], L.cell[kRecRho][1], 1e-12 * L.cell[kRecRho][1]);
 }
