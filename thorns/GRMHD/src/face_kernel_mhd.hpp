@@ -20,6 +20,48 @@ using MhdLineScratch = LineScratch<kNumRecMhd, kNumFluxMhd>;
 // the face and the inverse scale factors of the transverse components (1 in Cartesian coordinates).
 enum MhdFaceWork : int { kWorkBNormal = 8, kWorkInvNext = 9, kWorkInvPrev = 10 };
 
+// The metric and the left and right fluid and magnetic states at face f of the line (the field's
+// normal component from the face, the transverse ones reconstructed).
+struct MhdFaceStates {
+  PointMetric m;
+  FluidState sl, sr;
+  MagneticState ml, mr;
+};
+template <int D, class E>
+[[gnu::always_inline]] inline MhdFaceStates mhd_face_states(const E& eos, const MhdLineScratch& L, int f) {
+  constexpr int next = (D + 1) % 3, prev = (D + 2) % 3;
+  MhdFaceStates st;
+  st.m = face_point_metric<D>(L.face, f);
+  st.sl = face_side_state<0>(eos, st.m, L, f);
+  st.sr = face_side_state<1>(eos, st.m, L, f);
+  const double in = L.work[kWorkInvNext][f], ip = L.work[kWorkInvPrev][f];
+  double Bl[3], Br[3];
+  Bl[D] = Br[D] = L.work[kWorkBNormal][f];
+  Bl[next] = L.left[kRecBNext][f] * in;
+  Br[next] = L.right[kRecBNext][f] * in;
+  Bl[prev] = L.left[kRecBPrev][f] * ip;
+  Br[prev] = L.right[kRecBPrev][f] * ip;
+  st.ml = magnetic_state(st.sl, st.m, Bl[0], Bl[1], Bl[2]);
+  st.mr = magnetic_state(st.sr, st.m, Br[0], Br[1], Br[2]);
+  return st;
+}
+
+// What the edge EMFs read of face f: alpha^+- (std::max({0, lpl, lpr}), -std::min({0, lml, lmr}))
+// and the transport velocities of the two sides.
+template <int D, class Out>
+[[gnu::always_inline]] inline void write_emf_riemann_data(const Out& out, int f, const MhdFaceStates& st, double lml,
+                                                          double lpl, double lmr, double lpr) {
+  double ap = 0.0, am = 0.0;
+  ap = ap < lpl ? lpl : ap;
+  ap = ap < lpr ? lpr : ap;
+  am = lml < am ? lml : am;
+  am = lmr < am ? lmr : am;
+  out(kNumCons + kAlphaPlus, f) = ap;
+  out(kNumCons + kAlphaMinus, f) = -am;
+  out(kNumCons + kVtLeft, f) = st.m.alpha * st.sl.v[D] - st.m.beta[D];
+  out(kNumCons + kVtRight, f) = st.m.alpha * st.sr.v[D] - st.m.beta[D];
+}
+
 // flatten: as hydro_face_loop. Induction = false: without the induction fluxes (outputs 10, 11 left
 // alone; HLL of the six hydro components only, whose operations are the same).
 template <int D, bool Induction = true, class E, class Out>
@@ -29,18 +71,11 @@ template <int D, bool Induction = true, class E, class Out>
   const double w0 = flux_weight[0], w1 = flux_weight[1], w2 = flux_weight[2];
 #pragma GCC ivdep
   for (int f = 0; f <= n; ++f) {
-    const PointMetric m = face_point_metric<D>(L.face, f);
+    const MhdFaceStates st = mhd_face_states<D>(eos, L, f);
+    const PointMetric& m = st.m;
+    const FluidState &sl = st.sl, &sr = st.sr;
+    const MagneticState &ml = st.ml, &mr = st.mr;
     const double psi6 = L.face.psi6[f];
-    const FluidState sl = face_side_state<0>(eos, m, L, f), sr = face_side_state<1>(eos, m, L, f);
-    const double in = L.work[kWorkInvNext][f], ip = L.work[kWorkInvPrev][f];
-    double Bl[3], Br[3];
-    Bl[D] = Br[D] = L.work[kWorkBNormal][f];
-    Bl[next] = L.left[kRecBNext][f] * in;
-    Br[next] = L.right[kRecBNext][f] * in;
-    Bl[prev] = L.left[kRecBPrev][f] * ip;
-    Br[prev] = L.right[kRecBPrev][f] * ip;
-    const MagneticState ml = magnetic_state(sl, m, Bl[0], Bl[1], Bl[2]);
-    const MagneticState mr = magnetic_state(sr, m, Br[0], Br[1], Br[2]);
     double ul[kNumMhd], ur[kNumMhd], fl[kNumMhd], fr[kNumMhd], fh[kNumMhd];
     double lml, lpl, lmr, lpr;
     conserved_mhd(sl, ml, ul);
@@ -55,15 +90,7 @@ template <int D, bool Induction = true, class E, class Out>
     fh[kS3] *= w2;
 #pragma GCC unroll 9
     for (int c = 0; c < kNumCons; ++c) out(c, f) = fh[c] * psi6;
-    double ap = 0.0, am = 0.0;  // std::max({0.0, lpl, lpr}), std::min({0.0, lml, lmr})
-    ap = ap < lpl ? lpl : ap;
-    ap = ap < lpr ? lpr : ap;
-    am = lml < am ? lml : am;
-    am = lmr < am ? lmr : am;
-    out(kNumCons + kAlphaPlus, f) = ap;
-    out(kNumCons + kAlphaMinus, f) = -am;
-    out(kNumCons + kVtLeft, f) = m.alpha * sl.v[D] - m.beta[D];
-    out(kNumCons + kVtRight, f) = m.alpha * sr.v[D] - m.beta[D];
+    write_emf_riemann_data<D>(out, f, st, lml, lpl, lmr, lpr);
     if constexpr (Induction) {
       out(kNumCons + kFluxNext, f) = fh[kB1 + next] * psi6;
       out(kNumCons + kFluxPrev, f) = fh[kB1 + prev] * psi6;
@@ -76,32 +103,16 @@ template <int D, bool Induction = true, class E, class Out>
 // the same operations for these outputs, without the conserved variables, the fluxes and HLL.
 template <int D, class E, class Out>
 [[gnu::flatten]] inline void mhd_face_speed_loop(const E& eos, int n, const MhdLineScratch& L, const Out& out) {
-  constexpr int next = (D + 1) % 3, prev = (D + 2) % 3;
 #pragma GCC ivdep
   for (int f = 0; f <= n; ++f) {
-    const PointMetric m = face_point_metric<D>(L.face, f);
-    const FluidState sl = face_side_state<0>(eos, m, L, f), sr = face_side_state<1>(eos, m, L, f);
-    const double in = L.work[kWorkInvNext][f], ip = L.work[kWorkInvPrev][f];
-    double Bl[3], Br[3];
-    Bl[D] = Br[D] = L.work[kWorkBNormal][f];
-    Bl[next] = L.left[kRecBNext][f] * in;
-    Br[next] = L.right[kRecBNext][f] * in;
-    Bl[prev] = L.left[kRecBPrev][f] * ip;
-    Br[prev] = L.right[kRecBPrev][f] * ip;
-    const MagneticState ml = magnetic_state(sl, m, Bl[0], Bl[1], Bl[2]);
-    const MagneticState mr = magnetic_state(sr, m, Br[0], Br[1], Br[2]);
+    const MhdFaceStates st = mhd_face_states<D>(eos, L, f);
+    const PointMetric& m = st.m;
+    const FluidState &sl = st.sl, &sr = st.sr;
+    const MagneticState &ml = st.ml, &mr = st.mr;
     double lml, lpl, lmr, lpr;
     characteristic_speeds_mhd(D, sl, ml, m, lml, lpl);
     characteristic_speeds_mhd(D, sr, mr, m, lmr, lpr);
-    double ap = 0.0, am = 0.0;  // as mhd_face_loop
-    ap = ap < lpl ? lpl : ap;
-    ap = ap < lpr ? lpr : ap;
-    am = lml < am ? lml : am;
-    am = lmr < am ? lmr : am;
-    out(kNumCons + kAlphaPlus, f) = ap;
-    out(kNumCons + kAlphaMinus, f) = -am;
-    out(kNumCons + kVtLeft, f) = m.alpha * sl.v[D] - m.beta[D];
-    out(kNumCons + kVtRight, f) = m.alpha * sr.v[D] - m.beta[D];
+    write_emf_riemann_data<D>(out, f, st, lml, lpl, lmr, lpr);
   }
 }
 

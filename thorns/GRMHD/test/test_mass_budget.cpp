@@ -5,16 +5,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <span>
+#include <sstream>
 #include <string>
-#include <unistd.h>
 
-#include "Analysis/star_diagnostics.hpp"
-#include "remnant/driver.hpp"
-
-std::span<const remnant::ThornEntry> remnant_compiled_thorns();
+#include "history_run.hpp"
 
 namespace {
 
@@ -23,31 +17,19 @@ using namespace remnant;
 // A shock tube whose dense gas streams out through the left boundary (v = -0.3) and expands into an
 // atmosphere on the right, whose cells the con2prim sweeps keep resetting.
 std::vector<analysis::StarDiagnostics> run(const std::string& coords, int dim, const std::string& refinement = "") {
-  static const ThornCatalog catalog(remnant_compiled_thorns());
-  const auto dir = std::filesystem::temp_directory_path() / ("remnant_budget_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const std::string par = (dir / "budget.yaml").string();
-  std::ofstream(par) << "active_thorns: [Grid, MoL, Spacetime, EOS, Atmosphere, Con2Prim, HydroBase, GRMHD, Analysis]\n"
-                        "Grid: {coordinates: " << coords << ", dimension: " << dim << ", ncells: [64, 16, 1], "
-                        "block_size: [16, 16, 1], xmin: [1, 0.5, 0], xmax: [2, 1.5, 1], ghost_zones: 3, "
-                        "boundary_lower: [outflow, outflow, outflow], boundary_upper: [outflow, outflow, outflow]"
-                     << refinement << "}\n"
-                        "MoL: {method: rk3, cfl: 0.4, max_iterations: 60}\n"
-                        "EOS: {type: ideal_gas, gamma: 1.6666666666666667, rho_max: 1.0e3, T_max: 1.0e7}\n"
-                        "Atmosphere: {rho_thr: 1.0e-6}\n"
-                        "GRMHD: {reconstruction: ppm, initial_data: shock_tube, shock_left: [10.0, -0.3, 0.0, 0.0, 13.33], "
-                        "shock_right: [1.0e-9, 0.0, 0.0, 0.0, 1.0e-12], shock_position: 1.4}\n"
-                        "Analysis: {every: 1}\n";
-  SimulationOptions o;
-  o.parfile_path = par;
-  o.quiet = true;
-  o.overrides = {"Flesh::out_dir=" + (dir / "out").string()};
-  Simulation sim(catalog, o, MPI_COMM_WORLD);
-  sim.setup_output_and_grid();
-  sim.run();
-  auto rows = sim.context().service<analysis::History>("Analysis::history").rows;
-  std::filesystem::remove_all(dir);
-  return rows;
+  std::ostringstream par;
+  par << "active_thorns: [Grid, MoL, Spacetime, EOS, Atmosphere, Con2Prim, HydroBase, GRMHD, Analysis]\n"
+         "Grid: {coordinates: " << coords << ", dimension: " << dim << ", ncells: [64, 16, 1], "
+         "block_size: [16, 16, 1], xmin: [1, 0.5, 0], xmax: [2, 1.5, 1], ghost_zones: 3, "
+         "boundary_lower: [outflow, outflow, outflow], boundary_upper: [outflow, outflow, outflow]"
+      << refinement << "}\n"
+         "MoL: {method: rk3, cfl: 0.4, max_iterations: 60}\n"
+         "EOS: {type: ideal_gas, gamma: 1.6666666666666667, rho_max: 1.0e3, T_max: 1.0e7}\n"
+         "Atmosphere: {rho_thr: 1.0e-6}\n"
+         "GRMHD: {reconstruction: ppm, initial_data: shock_tube, shock_left: [10.0, -0.3, 0.0, 0.0, 13.33], "
+         "shock_right: [1.0e-9, 0.0, 0.0, 0.0, 1.0e-12], shock_position: 1.4}\n"
+         "Analysis: {every: 1}\n";
+  return grmhd::test::run_parfile_history("budget", par.str());
 }
 
 void expect_budget_constant(const std::vector<analysis::StarDiagnostics>& rows, const char* what) {

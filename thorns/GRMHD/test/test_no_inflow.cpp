@@ -7,16 +7,10 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
-#include <span>
+#include <sstream>
 #include <string>
-#include <unistd.h>
 
-#include "Analysis/star_diagnostics.hpp"
-#include "remnant/driver.hpp"
-
-std::span<const remnant::ThornEntry> remnant_compiled_thorns();
+#include "history_run.hpp"
 
 namespace {
 
@@ -26,33 +20,21 @@ using namespace remnant;
 std::vector<analysis::StarDiagnostics> run(const std::string& coords, int dim, const std::string& boundary,
                                            double v_left, double v_right, double rho_right = 1.0,
                                            bool field = false) {
-  static const ThornCatalog catalog(remnant_compiled_thorns());
-  const auto dir = std::filesystem::temp_directory_path() / ("remnant_noinflow_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const std::string par = (dir / "noinflow.yaml").string();
-  std::ofstream(par) << "active_thorns: [Grid, MoL, Spacetime, EOS, Atmosphere, Con2Prim, HydroBase, GRMHD, Analysis]\n"
-                        "Grid: {coordinates: " << coords << ", dimension: " << dim << ", ncells: [64, 8, 1], "
-                        "block_size: [16, 8, 1], xmin: [1, 0.5, 0], xmax: [2, 1.5, 1], ghost_zones: 3, "
-                        "boundary_lower: [outflow, outflow, outflow], boundary_upper: [outflow, outflow, outflow]}\n"
-                        "MoL: {method: rk3, cfl: 0.4, max_iterations: 80}\n"
-                        "EOS: {type: ideal_gas, gamma: 1.6666666666666667, rho_max: 1.0e3, T_max: 1.0e7}\n"
-                        "Atmosphere: {rho_thr: 1.0e-9}\n"
-                        "HydroBase: {outflow_boundary: " << boundary << (field ? ", magnetic_field: evolved" : "") << "}\n"
-                        "GRMHD: {reconstruction: ppm, initial_data: shock_tube, shock_left: [1.0, " << v_left
-                     << ", 0.0, 0.0, 0.1], shock_right: [" << rho_right << ", " << v_right
-                     << ", 0.0, 0.0, 0.1], shock_position: 1.5"
-                     << (field ? ", shock_field_left: [0.3, 0.4, 0.0], shock_field_right: [0.3, 0.4, 0.0]" : "") << "}\n"
-                        "Analysis: {every: 1}\n";
-  SimulationOptions o;
-  o.parfile_path = par;
-  o.quiet = true;
-  o.overrides = {"Flesh::out_dir=" + (dir / "out").string()};
-  Simulation sim(catalog, o, MPI_COMM_WORLD);
-  sim.setup_output_and_grid();
-  sim.run();
-  auto rows = sim.context().service<analysis::History>("Analysis::history").rows;
-  std::filesystem::remove_all(dir);
-  return rows;
+  std::ostringstream par;
+  par << "active_thorns: [Grid, MoL, Spacetime, EOS, Atmosphere, Con2Prim, HydroBase, GRMHD, Analysis]\n"
+         "Grid: {coordinates: " << coords << ", dimension: " << dim << ", ncells: [64, 8, 1], "
+         "block_size: [16, 8, 1], xmin: [1, 0.5, 0], xmax: [2, 1.5, 1], ghost_zones: 3, "
+         "boundary_lower: [outflow, outflow, outflow], boundary_upper: [outflow, outflow, outflow]}\n"
+         "MoL: {method: rk3, cfl: 0.4, max_iterations: 80}\n"
+         "EOS: {type: ideal_gas, gamma: 1.6666666666666667, rho_max: 1.0e3, T_max: 1.0e7}\n"
+         "Atmosphere: {rho_thr: 1.0e-9}\n"
+         "HydroBase: {outflow_boundary: " << boundary << (field ? ", magnetic_field: evolved" : "") << "}\n"
+         "GRMHD: {reconstruction: ppm, initial_data: shock_tube, shock_left: [1.0, " << v_left
+      << ", 0.0, 0.0, 0.1], shock_right: [" << rho_right << ", " << v_right
+      << ", 0.0, 0.0, 0.1], shock_position: 1.5"
+      << (field ? ", shock_field_left: [0.3, 0.4, 0.0], shock_field_right: [0.3, 0.4, 0.0]" : "") << "}\n"
+         "Analysis: {every: 1}\n";
+  return grmhd::test::run_parfile_history("noinflow", par.str());
 }
 
 void report(const std::vector<analysis::StarDiagnostics>& rows, const char* what) {
