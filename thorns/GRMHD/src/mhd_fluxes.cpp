@@ -162,6 +162,15 @@ MhdSweepOutputs MhdSweepOutputs::for_emfs(EmfScheme emfs, const Block& b) {
   return o;
 }
 
+void zero_skipped_induction_fluxes(const MhdSweepOutputs& outputs, const MhdGroups& mg, Block& b) {
+  if (outputs.induction_fluxes) return;
+  for (int d = 0; d < 3; ++d) {
+    const std::size_t points = b.points_per_component(mg.ct[d]);
+    double* data = b.data(mg.ct[d]);
+    std::fill(data + kFluxNext * points, data + (kFluxPrev + 1) * points, 0.0);
+  }
+}
+
 void compute_block_fluxes_mhd(const eos::EOS& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg,
                               Block& b, EmfScheme emfs) {
   const MhdSweepOutputs outputs = MhdSweepOutputs::for_emfs(emfs, b);

@@ -23,4 +23,8 @@ struct MhdSweepOutputs {
   static MhdSweepOutputs for_emfs(EmfScheme emfs, const Block& b);
 };
 
+// The induction fluxes the sweep skipped (`outputs`) set to zero: GRMHD_RHS_MHD then writes all of
+// ct_x/y/z, as thorn.yaml declares and `remnant --debug` checks (nothing reads them).
+void zero_skipped_induction_fluxes(const MhdSweepOutputs& outputs, const MhdGroups& mg, Block& b);
+
 }  // namespace remnant::grmhd

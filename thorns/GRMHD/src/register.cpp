@@ -115,7 +115,10 @@ void calc_rhs_mhd(Context& ctx) {
   const EmfScheme scheme = emf == "arithmetic"    ? EmfScheme::arithmetic
                            : emf == "uct_contact" ? EmfScheme::uct_contact
                                                   : EmfScheme::uct_hll;
-  for (Block* b : ctx.grid().local_blocks()) compute_block_fluxes_mhd(eos, s, g, mg, *b, scheme);
+  for (Block* b : ctx.grid().local_blocks()) {
+    compute_block_fluxes_mhd(eos, s, g, mg, *b, scheme);
+    zero_skipped_induction_fluxes(MhdSweepOutputs::for_emfs(scheme, *b), mg, *b);
+  }
   apply_positivity_limiter(ctx, g);
   std::vector<int> faces;
   for (int d = 0; d < ctx.grid().dimension(); ++d) faces.push_back(g.flux[d]);
