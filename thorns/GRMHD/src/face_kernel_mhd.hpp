@@ -106,12 +106,9 @@ template <int D, class E, class Out>
 #pragma GCC ivdep
   for (int f = 0; f <= n; ++f) {
     const MhdFaceStates st = mhd_face_states<D>(eos, L, f);
-    const PointMetric& m = st.m;
-    const FluidState &sl = st.sl, &sr = st.sr;
-    const MagneticState &ml = st.ml, &mr = st.mr;
     double lml, lpl, lmr, lpr;
-    characteristic_speeds_mhd(D, sl, ml, m, lml, lpl);
-    characteristic_speeds_mhd(D, sr, mr, m, lmr, lpr);
+    characteristic_speeds_mhd(D, st.sl, st.ml, st.m, lml, lpl);
+    characteristic_speeds_mhd(D, st.sr, st.mr, st.m, lmr, lpr);
     write_emf_riemann_data<D>(out, f, st, lml, lpl, lmr, lpr);
   }
 }
