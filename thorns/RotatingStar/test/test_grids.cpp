@@ -291,7 +291,7 @@ TEST(RotatingStarGrids, NonRotatingStarOn1DSphericalGrids) {
                                   {"Grid::dimension=1", "Grid::ncells=[" + N + ",1,1]", "Grid::block_size=[64,1,1]",
                                    "Grid::xmax=[40,3.141592653589793,6.283185307179586]", "Grid::boundary_lower=[origin,outflow,outflow]",
                                    "Grid::boundary_upper=[outflow,outflow,outflow]", "Grid::max_level=0", "Grid::regions=[]",
-                                   "Grid::region_levels=[]", "Grid::region_bounds=[]", "RotatingStar::rotation_law=uniform",
+                                   "Grid::region_levels=[]", "Grid::region_modes=[]", "Grid::region_bounds=[]", "RotatingStar::rotation_law=uniform",
                                    "RotatingStar::omega=0", "RotatingStar::nr=1600", "MoL::max_iterations=0", "MoL::final_time=-1",
                                    "IO::hdf5_every_time=0"});
     Context& ctx = sim.context();

@@ -31,8 +31,8 @@ TEST(RotatingStarThorn, GlobalQuantitiesGoToTheLogAndTheTsv) {
   {
     remnant::rotstar::test::ParfileRun run(
         "magnetized_drns.yaml", "rotreport",
-        {"Grid::ncells=[32,64,1]", "Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]", "Grid::region_bounds=[]",
-         "RotatingStar::nr=200", "MoL::max_iterations=0", "MoL::final_time=-1", "IO::hdf5_every_time=0"});
+        {"Grid::ncells=[32,64,1]", "Grid::max_level=0", "Grid::regions=[]", "Grid::region_levels=[]", "Grid::region_modes=[]",
+         "Grid::region_bounds=[]", "RotatingStar::nr=200", "MoL::max_iterations=0", "MoL::final_time=-1", "IO::hdf5_every_time=0"});
     std::ifstream in(run.out_dir() / "rotating_star.tsv");
     for (std::string line; std::getline(in, line);) tsv.push_back(line);
   }
