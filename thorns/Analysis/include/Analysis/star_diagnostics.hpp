@@ -10,6 +10,7 @@
 #include "Analysis/magnetic_diagnostics.hpp"
 #include "Analysis/rotation_diagnostics.hpp"
 #include "Analysis/collision_diagnostics.hpp"
+#include "Analysis/collision_reference.hpp"
 #include "remnant/context.hpp"
 
 namespace remnant::analysis {
@@ -36,6 +37,9 @@ struct StarDiagnostics {
 
 struct History {
   std::vector<StarDiagnostics> rows;
+  // After a recovery: the first and last rows of the run before it, read back from analysis.tsv
+  // (the collision columns' references; Analysis/collision_reference.hpp).
+  std::optional<CollisionReference> resumed;
 };
 
 // Collective over the grid's ranks; every rank gets the same values.
