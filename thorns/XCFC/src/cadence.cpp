@@ -169,7 +169,8 @@ void cadence(Context& ctx) {
   }
   rt.stage = resolved_extrapolation(ctx) != "hold" ? Stage::extrapolate : Stage::check_trigger;
   // XCFC::stage_metric = extrapolate: the step's last Runge-Kutta stage already extrapolated the
-  // metric to this time from this history, and the matter was recovered with it (stage_metric.hpp).
+  // metric to this time from this history, and the matter was recovered with it (stage_metric.hpp;
+  // blocks a regrid just made keep their prolonged metric until the next stage).
   if (rt.stage == Stage::extrapolate && stage_metric_on(ctx)) rt.stage = Stage::check_trigger;
   // The trigger's residual needs the sources of this step's matter.
   rt.sources_due = ctx.param<double>("XCFC", "residual_trigger") > 0;

@@ -9,8 +9,9 @@ namespace remnant::xcfc {
 bool stage_metric_on(Context& ctx) { return ctx.param<std::string>("XCFC", "stage_metric") == "extrapolate"; }
 
 void stage_metric(Context& ctx) {
-  // The history is that of the solves (and updates) before this step: the stages lie in
-  // [t_last, t_last + dt], where the extrapolation is accurate to the order of XCFC::extrapolation.
+  // The history holds the solves (and updates) up to this step's start; the stage times lie within
+  // a step of it, or within the solve interval between solves, where XCFC_Extrapolate would
+  // extrapolate to in prestep anyway.
   write_extrapolated_metric(ctx, metric_extrapolation(ctx));
 }
 
