@@ -10,6 +10,7 @@
 #include "remnant/vars/XCFC.hpp"
 #include "runtime.hpp"
 #include "solve_sequence.hpp"
+#include "stage_metric.hpp"
 
 namespace remnant::xcfc {
 
@@ -167,6 +168,10 @@ void cadence(Context& ctx) {
     return;
   }
   rt.stage = resolved_extrapolation(ctx) != "hold" ? Stage::extrapolate : Stage::check_trigger;
+  // XCFC::stage_metric = extrapolate: the step's last Runge-Kutta stage already extrapolated the
+  // metric to this time from this history, and the matter was recovered with it (stage_metric.hpp;
+  // blocks a regrid just made keep their prolonged metric until the next stage).
+  if (rt.stage == Stage::extrapolate && stage_metric_on(ctx)) rt.stage = Stage::check_trigger;
   // The trigger's residual needs the sources of this step's matter.
   rt.sources_due = ctx.param<double>("XCFC", "residual_trigger") > 0;
 }
@@ -179,8 +184,11 @@ void extrapolate(Context& ctx) {
   Runtime& rt = runtime(ctx);
   if (rt.stage != Stage::extrapolate) return;
   rt.stage = Stage::check_trigger;
-  const MetricExtrapolation e = metric_extrapolation(ctx);
-  if (e.kind == MetricExtrapolation::Kind::hold) return;
+  if (write_extrapolated_metric(ctx, metric_extrapolation(ctx))) rt.recovery_due = true;
+}
+
+bool write_extrapolated_metric(Context& ctx, const MetricExtrapolation& e) {
+  if (e.kind == MetricExtrapolation::Kind::hold) return false;
   const int metric = ctx.var("Spacetime::metric"), hist = ctx.var("XCFC::metric_history");
   const double w = e.w;
   const std::array<double, 3> l = e.l;
@@ -197,7 +205,7 @@ void extrapolate(Context& ctx) {
         for_interior(*b, [&](int i, int j, int k) { m(i, j, k) = last(i, j, k) + w * (last(i, j, k) - before(i, j, k)); });
       }
     }
-  rt.recovery_due = true;
+  return true;
 }
 
 void residual_trigger(Context& ctx) {

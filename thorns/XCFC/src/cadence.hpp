@@ -76,6 +76,9 @@ void record_history(Context& ctx, bool update = false);
 void cadence(Context& ctx);
 // XCFC_Extrapolate: the metric extrapolated to the current time; the recovery is then due.
 void extrapolate(Context& ctx);
+// Spacetime::metric's interior set to e applied to XCFC::metric_history; false (nothing written)
+// for the hold.
+bool write_extrapolated_metric(Context& ctx, const MetricExtrapolation& e);
 // XCFC_ResidualTrigger: after the extrapolation (or hold), a solve in the next pass when the psi
 // residual with the current matter exceeds XCFC::residual_trigger.
 void residual_trigger(Context& ctx);

@@ -11,6 +11,7 @@
 #include "remnant/vars/XCFC.hpp"
 #include "runtime.hpp"
 #include "solve_sequence.hpp"
+#include "stage_metric.hpp"
 
 namespace remnant::xcfc {
 namespace {
@@ -26,6 +27,7 @@ void check_parameters(Context& ctx) {
         if (!g.cartesian_basis || g.components[static_cast<std::size_t>(first + a)].kind != TensorKind::vector)
           throw InputError(g.where, std::string(name) + " must declare XB and betaB as `vector` with `basis: cartesian`");
   }
+  check_stage_metric(ctx);
   const Domain domain = ctx.grid().domain();
   for (int side = 0; side < 2; ++side)
     for (int d = 0; d < domain.faces.dimension; ++d) {
@@ -62,6 +64,8 @@ REMNANT_REGISTER_THORN(XCFC) {
   reg.function("XCFC_Lapse", step_lapse);
   reg.function("XCFC_Shift", step_shift);
   reg.function("XCFC_ResidualTrigger", residual_trigger);
+  // Inside the matter step (XCFC::stage_metric = extrapolate): the metric at each stage's time.
+  reg.function("XCFC_StageMetric", stage_metric);
   reg.persistent_state([](remnant::Context& ctx) { return save_persistent(runtime(ctx)); },
                        [](remnant::Context& ctx, const std::string& text) { restore_persistent(runtime(ctx), text); });
 }
