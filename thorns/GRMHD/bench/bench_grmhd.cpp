@@ -6,6 +6,7 @@
 //   bench_GRMHD                                   all benchmarks
 //   bench_GRMHD --zone-cost=ideal|sfho STEPS      run STEPS steps and exit (for callgrind; see README)
 //   bench_GRMHD --zone-cost=mhd-ideal|mhd-sfho STEPS   the same with the magnetic field (BM_StepMHD's)
+//   bench_GRMHD --portable-kernels ...   any of these with the SSE2 kernels where the CPU has AVX2
 // Both print a checksum of the conserved variables (and face fields) after the steps: a kernel
 // change that is meant to keep the bits must keep it.
 #include <benchmark/benchmark.h>
@@ -16,6 +17,7 @@
 #include <string>
 #include <utility>
 
+#include "kernel_isa.hpp"
 #include "star_block.hpp"
 
 namespace {
@@ -119,6 +121,13 @@ BENCHMARK_CAPTURE(BM_Part, con2prim_sfho, std::string("sfho"), 0)->Arg(32)->Unit
 BENCHMARK_CAPTURE(BM_Part, fluxes_sfho, std::string("sfho"), 1)->Arg(32)->Unit(benchmark::kMicrosecond);
 
 int main(int argc, char** argv) {
+  // --portable-kernels (first argument): the SSE2 sweeps and rows even where the CPU has AVX2
+  // (kernel_isa.hpp), for the figures of CPUs without it.
+  if (argc > 1 && std::strcmp(argv[1], "--portable-kernels") == 0) {
+    remnant::grmhd::use_portable_kernels(true);
+    argv[1] = argv[0];
+    ++argv, --argc;
+  }
   for (int i = 1; i < argc; ++i)
     if (std::strncmp(argv[i], "--zone-cost=", 12) == 0) {
       std::string which = argv[i] + 12;

@@ -10,6 +10,7 @@
 #include "HydroBase/magnetic_field.hpp"
 #include "emf_contact.hpp"
 #include "groups.hpp"
+#include "kernel_isa.hpp"
 #include "remnant/cell_geometry.hpp"
 
 namespace remnant::grmhd {
@@ -130,8 +131,8 @@ struct CtRow {
 
 // The MC slopes of the face values q along stride sq, mc_slope_select(q - q[-sq], q[+sq] - q), into
 // `out` (indexed as q) at the points lo .. hi - 1 of the field's index space (sj, sk: its strides).
-void mc_slopes(const double* q, std::ptrdiff_t sj, std::ptrdiff_t sk, std::ptrdiff_t sq, const int* lo, const int* hi,
-               double* out) {
+[[gnu::always_inline]] inline void mc_slopes_body(const double* q, std::ptrdiff_t sj, std::ptrdiff_t sk,
+                                                 std::ptrdiff_t sq, const int* lo, const int* hi, double* out) {
   for (int k = lo[2]; k < hi[2]; ++k)
     for (int j = lo[1]; j < hi[1]; ++j) {
       const std::ptrdiff_t o = lo[0] + j * sj + k * sk;
@@ -141,6 +142,18 @@ void mc_slopes(const double* q, std::ptrdiff_t sj, std::ptrdiff_t sk, std::ptrdi
     }
 }
 
+void mc_slopes(const double* q, std::ptrdiff_t sj, std::ptrdiff_t sk, std::ptrdiff_t sq, const int* lo, const int* hi,
+               double* out) {
+  mc_slopes_body(q, sj, sk, sq, lo, hi, out);
+}
+#if REMNANT_HAVE_AVX2_KERNELS
+// The same in AVX2 (kernel_isa.hpp; the same bits).
+REMNANT_AVX2_KERNEL void mc_slopes_avx2(const double* q, std::ptrdiff_t sj, std::ptrdiff_t sk, std::ptrdiff_t sq,
+                                        const int* lo, const int* hi, double* out) {
+  mc_slopes_body(q, sj, sk, sq, lo, hi, out);
+}
+#endif
+
 // The slopes a row of edges reads: of q = face field `f` along direction d, for the edges
 // 0 .. ext - 1 (points -1 .. ext - 1 along d), in `storage` (resized to the field's group).
 const double* edge_slopes(Block& b, int group, const Strided& f, int d, const int* ext, std::vector<double>& storage) {
@@ -148,14 +161,21 @@ const double* edge_slopes(Block& b, int group, const Strided& f, int d, const in
   double* out = storage.data() + (f.f.origin - b.data(group));
   int lo[3] = {0, 0, 0}, hi[3] = {ext[0], ext[1], ext[2]};
   lo[d] = -1;
+#if REMNANT_HAVE_AVX2_KERNELS
+  if (avx2_kernels()) {
+    mc_slopes_avx2(f.f.origin, f.f.sj, f.f.sk, f.stride(d), lo, hi, out);
+    return out;
+  }
+#endif
   mc_slopes(f.f.origin, f.f.sj, f.f.sk, f.stride(d), lo, hi, out);
   return out;
 }
 
 template <int C>
-void uct_hll_row_cartesian(const Strided* cta, const Strided* ctb, const Strided& Ba, const Strided& Bb,
-                           const double* slope_a, const double* slope_b, const int* id, int len, const double* ffa,
-                           const double* ffb, const double* vwc, double len_c, const Strided& e) {
+[[gnu::always_inline]] inline void uct_hll_row_body(const Strided* cta, const Strided* ctb, const Strided& Ba,
+                                                   const Strided& Bb, const double* slope_a, const double* slope_b,
+                                                   const int* id, int len, const double* ffa, const double* ffb,
+                                                   const double* vwc, double len_c, const Strided& e) {
   constexpr int a = (C + 1) % 3, bb = (C + 2) % 3;
   const CtRow ra(cta, cta[0].at(id)), rb(ctb, ctb[0].at(id));
   const std::ptrdiff_t sb = cta[0].stride(bb), sa = ctb[0].stride(a);
@@ -175,6 +195,29 @@ void uct_hll_row_cartesian(const Strided* cta, const Strided* ctb, const Strided
     const double emf = -upwind_part_select(ra, i, sb, qb, slb, sqb) + upwind_part_select(rb, i, sa, qa, sla, sqa);
     out[i] = emf * fa[a == 0 ? i : 0] * fb[bb == 0 ? i : 0] * fc[C == 0 ? i : 0] / len_c;
   }
+}
+template <int C>
+void uct_hll_row_cartesian(const Strided* cta, const Strided* ctb, const Strided& Ba, const Strided& Bb,
+                           const double* slope_a, const double* slope_b, const int* id, int len, const double* ffa,
+                           const double* ffb, const double* vwc, double len_c, const Strided& e) {
+  uct_hll_row_body<C>(cta, ctb, Ba, Bb, slope_a, slope_b, id, len, ffa, ffb, vwc, len_c, e);
+}
+#if REMNANT_HAVE_AVX2_KERNELS
+template <int C>
+REMNANT_AVX2_KERNEL void uct_hll_row_cartesian_avx2(const Strided* cta, const Strided* ctb, const Strided& Ba,
+                                                    const Strided& Bb, const double* slope_a, const double* slope_b,
+                                                    const int* id, int len, const double* ffa, const double* ffb,
+                                                    const double* vwc, double len_c, const Strided& e) {
+  uct_hll_row_body<C>(cta, ctb, Ba, Bb, slope_a, slope_b, id, len, ffa, ffb, vwc, len_c, e);
+}
+#endif
+// The row function of component C for the instruction set avx2_kernels() chooses.
+template <int C>
+auto* uct_hll_row_function() {
+#if REMNANT_HAVE_AVX2_KERNELS
+  if (avx2_kernels()) return &uct_hll_row_cartesian_avx2<C>;
+#endif
+  return &uct_hll_row_cartesian<C>;
 }
 
 }  // namespace
@@ -213,10 +256,10 @@ void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block&
       thread_local std::vector<double> slope_storage[2];
       const double* slope_b = edge_slopes(b, g.bface[bb], Bb, a, ext, slope_storage[0]);  // B^bb along a
       const double* slope_a = edge_slopes(b, g.bface[a], Ba, bb, ext, slope_storage[1]);  // B^a along bb
+      const auto row = c == 0 ? uct_hll_row_function<0>() : c == 1 ? uct_hll_row_function<1>() : uct_hll_row_function<2>();
       for (id[2] = 0; id[2] < ext[2]; ++id[2])
         for (id[1] = 0; id[1] < ext[1]; ++id[1]) {
           id[0] = 0;
-          const auto row = c == 0 ? uct_hll_row_cartesian<0> : c == 1 ? uct_hll_row_cartesian<1> : uct_hll_row_cartesian<2>;
           row(cta, ctb, Ba, Bb, slope_a, slope_b, id, ext[0], ffa, ffb, vwc, len_c, e);
         }
       continue;

@@ -92,9 +92,10 @@ template <int N>
 }
 
 // The face loop; flatten: every pointwise function inlined whatever the inliner's budget (a call
-// left in the loop stops its vectorisation).
+// left in the loop stops its vectorisation). always_inline: into the sweeps, which are flattened
+// whole (rhs.cpp), so that the AVX2 sweep compiles it for AVX2 (kernel_isa.hpp).
 template <int D, class E, int NumRec, int NumFlux, class Out>
-[[gnu::flatten]] inline void hydro_face_loop(const E& eos, int n, const LineScratch<NumRec, NumFlux>& L, const Out& out) {
+[[gnu::always_inline, gnu::flatten]] inline void hydro_face_loop(const E& eos, int n, const LineScratch<NumRec, NumFlux>& L, const Out& out) {
 #pragma GCC ivdep
   for (int f = 0; f <= n; ++f) {
     const PointMetric m = face_point_metric<D>(L.face, f);
@@ -116,7 +117,7 @@ template <int D, class E, int NumRec, int NumFlux, class Out>
 
 // Into `out` (a FaceOutput), or into L.flux.
 template <int D, class E, int NumRec, int NumFlux, class Out>
-inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>& L, const Out& out) {
+[[gnu::always_inline]] inline void hydro_face_fluxes(const E& eos, int n, LineScratch<NumRec, NumFlux>& L, const Out& out) {
   if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
   hydro_face_loop<D>(eos, n, L, out);
 }

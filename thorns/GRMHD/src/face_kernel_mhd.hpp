@@ -62,10 +62,10 @@ template <int D, class Out>
   out(kNumCons + kVtRight, f) = st.m.alpha * st.sr.v[D] - st.m.beta[D];
 }
 
-// flatten: as hydro_face_loop. Induction = false: without the induction fluxes (outputs 10, 11 left
+// flatten, always_inline: as hydro_face_loop. Induction = false: without the induction fluxes (outputs 10, 11 left
 // alone; HLL of the six hydro components only, whose operations are the same).
 template <int D, bool Induction = true, class E, class Out>
-[[gnu::flatten]] inline void mhd_face_loop(const E& eos, int n, const std::array<double, 3>& flux_weight,
+[[gnu::always_inline, gnu::flatten]] inline void mhd_face_loop(const E& eos, int n, const std::array<double, 3>& flux_weight,
                                            const MhdLineScratch& L, const Out& out) {
   constexpr int next = (D + 1) % 3, prev = (D + 2) % 3;
   const double w0 = flux_weight[0], w1 = flux_weight[1], w2 = flux_weight[2];
@@ -102,7 +102,7 @@ template <int D, bool Induction = true, class E, class Out>
 // velocities), for the lines of the transverse ghost layers, whose fluxes no one reads with uct_hll:
 // the same operations for these outputs, without the conserved variables, the fluxes and HLL.
 template <int D, class E, class Out>
-[[gnu::flatten]] inline void mhd_face_speed_loop(const E& eos, int n, const MhdLineScratch& L, const Out& out) {
+[[gnu::always_inline, gnu::flatten]] inline void mhd_face_speed_loop(const E& eos, int n, const MhdLineScratch& L, const Out& out) {
 #pragma GCC ivdep
   for (int f = 0; f <= n; ++f) {
     const MhdFaceStates st = mhd_face_states<D>(eos, L, f);
@@ -116,14 +116,14 @@ template <int D, class E, class Out>
 // flux_weight: the momentum-flux factors of the line (mhd_fluxes.cpp's momentum_flux_weights).
 // Into `out` (a FaceOutput), or into L.flux; Induction: as mhd_face_loop.
 template <int D, bool Induction = true, class E, class Out>
-inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& flux_weight, MhdLineScratch& L,
+[[gnu::always_inline]] inline void mhd_face_fluxes(const E& eos, int n, const std::array<double, 3>& flux_weight, MhdLineScratch& L,
                             const Out& out) {
   if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
   mhd_face_loop<D, Induction>(eos, n, flux_weight, L, out);
 }
 // Only the speeds and transport velocities (mhd_face_speed_loop) into `out`.
 template <int D, class E, class Out>
-inline void mhd_face_speeds(const E& eos, int n, MhdLineScratch& L, const Out& out) {
+[[gnu::always_inline]] inline void mhd_face_speeds(const E& eos, int n, MhdLineScratch& L, const Out& out) {
   if constexpr (!reconstructs_pressure<E>) face_thermo_line(eos, n, L);
   mhd_face_speed_loop<D>(eos, n, L, out);
 }

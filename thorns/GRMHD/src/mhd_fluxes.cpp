@@ -13,6 +13,7 @@
 
 #include "HydroBase/magnetic_field.hpp"
 #include "face_kernel_mhd.hpp"
+#include "kernel_isa.hpp"
 #include "line_scratch.hpp"
 #include "line_sweep.hpp"
 #include "remnant/cell_geometry.hpp"
@@ -61,8 +62,9 @@ std::array<double, 3> momentum_flux_weights(const Block& b, int d, const int* id
   return c;
 }
 
+// always_inline: into the portable and the AVX2 wrappers of block_fluxes_mhd, each flattened whole.
 template <int D, class E>
-void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
+[[gnu::always_inline]] inline void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
                          MhdLineScratch& L, const MhdSweepOutputs& outputs) {
   const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
@@ -143,12 +145,35 @@ void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, co
 }
 
 template <class E>
-void block_fluxes_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
-                      const MhdSweepOutputs& outputs) {
-  thread_local MhdLineScratch scratch;
+[[gnu::always_inline]] inline void block_fluxes_mhd_body(const E& eos, const RhsSettings& s, const Groups& g,
+                                                         const MhdGroups& mg, Block& b, const MhdSweepOutputs& outputs,
+                                                         MhdLineScratch& scratch) {
   if (direction_used(b, 0)) sweep_direction_mhd<0>(eos, s, g, mg, b, scratch, outputs);
   if (direction_used(b, 1)) sweep_direction_mhd<1>(eos, s, g, mg, b, scratch, outputs);
   if (direction_used(b, 2)) sweep_direction_mhd<2>(eos, s, g, mg, b, scratch, outputs);
+}
+template <class E>
+[[gnu::flatten]] void block_fluxes_mhd_portable(const E& eos, const RhsSettings& s, const Groups& g,
+                                                const MhdGroups& mg, Block& b, const MhdSweepOutputs& outputs,
+                                                MhdLineScratch& scratch) {
+  block_fluxes_mhd_body(eos, s, g, mg, b, outputs, scratch);
+}
+#if REMNANT_HAVE_AVX2_KERNELS
+template <class E>
+REMNANT_AVX2_KERNEL void block_fluxes_mhd_avx2(const E& eos, const RhsSettings& s, const Groups& g,
+                                               const MhdGroups& mg, Block& b, const MhdSweepOutputs& outputs,
+                                               MhdLineScratch& scratch) {
+  block_fluxes_mhd_body(eos, s, g, mg, b, outputs, scratch);
+}
+#endif
+template <class E>
+void block_fluxes_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
+                      const MhdSweepOutputs& outputs) {
+  thread_local MhdLineScratch scratch;
+#if REMNANT_HAVE_AVX2_KERNELS
+  if (avx2_kernels()) return block_fluxes_mhd_avx2(eos, s, g, mg, b, outputs, scratch);
+#endif
+  block_fluxes_mhd_portable(eos, s, g, mg, b, outputs, scratch);
 }
 
 }  // namespace

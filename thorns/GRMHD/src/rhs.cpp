@@ -16,6 +16,7 @@
 #include "GRMHD/valencia.hpp"
 #include "centroid_derivative.hpp"
 #include "face_kernel.hpp"
+#include "kernel_isa.hpp"
 #include "line_scratch.hpp"
 #include "line_sweep.hpp"
 #include "remnant/cell_geometry.hpp"
@@ -25,8 +26,9 @@ namespace {
 
 using HydroLineScratch = LineScratch<kNumRecHydro, kNumCons>;
 
+// always_inline: into the portable and the AVX2 wrappers of block_fluxes, each flattened whole.
 template <int D, class E>
-void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, HydroLineScratch& L) {
+[[gnu::always_inline]] inline void sweep_direction(const E& eos, const RhsSettings& s, const Groups& g, Block& b, HydroLineScratch& L) {
   const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
   const SweepFields<D> fields(b, g);
@@ -141,10 +143,10 @@ inline void move_derivatives_to_centroid(MetricDerivatives& dm, const Field* met
 }
 
 template <bool Mhd, bool Shift>
-[[gnu::flatten]] void cartesian_sources_row(const Field* prim, const Field* met, const Field* bf, const Field* rhs,
-                                            const RowDivergence& dv, std::ptrdiff_t o0,
-                                            const std::array<std::ptrdiff_t, 3>& st,
-                                            const std::array<double, 3>& inv2dx, int n) {
+[[gnu::always_inline]] inline void sources_row_body(const Field* prim, const Field* met, const Field* bf,
+                                                   const Field* rhs, const RowDivergence& dv, std::ptrdiff_t o0,
+                                                   const std::array<std::ptrdiff_t, 3>& st,
+                                                   const std::array<double, 3>& inv2dx, int n) {
   const std::array<std::array<double, 3>, 3> df{};
   // ivdep: the rhs fields are written, the others only read (too many pairs for run-time alias checks).
 #pragma GCC ivdep
@@ -176,6 +178,30 @@ template <bool Mhd, bool Shift>
     rhs[kDYe].origin[o] = out[kDYe];
     for (int c = kS1; c <= kTau; ++c) rhs[c].origin[o] = out[c] + psi6 * src[c];
   }
+}
+template <bool Mhd, bool Shift>
+[[gnu::flatten]] void cartesian_sources_row(const Field* prim, const Field* met, const Field* bf, const Field* rhs,
+                                            const RowDivergence& dv, std::ptrdiff_t o0,
+                                            const std::array<std::ptrdiff_t, 3>& st,
+                                            const std::array<double, 3>& inv2dx, int n) {
+  sources_row_body<Mhd, Shift>(prim, met, bf, rhs, dv, o0, st, inv2dx, n);
+}
+#if REMNANT_HAVE_AVX2_KERNELS
+template <bool Mhd, bool Shift>
+REMNANT_AVX2_KERNEL void cartesian_sources_row_avx2(const Field* prim, const Field* met, const Field* bf,
+                                                    const Field* rhs, const RowDivergence& dv, std::ptrdiff_t o0,
+                                                    const std::array<std::ptrdiff_t, 3>& st,
+                                                    const std::array<double, 3>& inv2dx, int n) {
+  sources_row_body<Mhd, Shift>(prim, met, bf, rhs, dv, o0, st, inv2dx, n);
+}
+#endif
+// The row function of the instruction set avx2_kernels() chooses.
+template <bool Mhd, bool Shift>
+auto* sources_row_function() {
+#if REMNANT_HAVE_AVX2_KERNELS
+  if (avx2_kernels()) return &cartesian_sources_row_avx2<Mhd, Shift>;
+#endif
+  return &cartesian_sources_row<Mhd, Shift>;
 }
 
 // Pass 2 over the cells of a block, i fastest. Mhd: the magnetised sources with the cell-centred
@@ -258,6 +284,7 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
   const CentroidOffsets centroid(b, used);
   thread_local std::vector<double> row_storage;
   row_storage.resize(static_cast<std::size_t>(kNumCons) * static_cast<std::size_t>(b.n[0]));
+  const auto row_function = shift ? sources_row_function<Mhd, true>() : sources_row_function<Mhd, false>();
   double* row[kNumCons];
   for (int c = 0; c < kNumCons; ++c) row[c] = row_storage.data() + static_cast<std::size_t>(c) * b.n[0];
   for (int k = 0; k < b.n[2]; ++k)
@@ -285,8 +312,7 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
         dv.area_x = ff[0];
         dv.volume_x = vw[0];
         const std::ptrdiff_t o0 = j * met[0].sj + k * met[0].sk;
-        (shift ? cartesian_sources_row<Mhd, true> : cartesian_sources_row<Mhd, false>)(prim, met, bf, rhs, dv, o0, st,
-                                                                                     inv2dx, b.n[0]);
+        row_function(prim, met, bf, rhs, dv, o0, st, inv2dx, b.n[0]);
         continue;
       }
       // Flux divergence: (A+ F+ - A- F-) / V with A/V reduced to the 1D factors of direction d.
@@ -359,11 +385,30 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
 }
 
 template <class E>
-void block_fluxes(const E& eos, const RhsSettings& s, const Groups& g, Block& b) {
-  thread_local HydroLineScratch scratch;
+[[gnu::always_inline]] inline void block_fluxes_body(const E& eos, const RhsSettings& s, const Groups& g, Block& b,
+                                                     HydroLineScratch& scratch) {
   if (direction_used(b, 0)) sweep_direction<0>(eos, s, g, b, scratch);
   if (direction_used(b, 1)) sweep_direction<1>(eos, s, g, b, scratch);
   if (direction_used(b, 2)) sweep_direction<2>(eos, s, g, b, scratch);
+}
+template <class E>
+[[gnu::flatten]] void block_fluxes_portable(const E& eos, const RhsSettings& s, const Groups& g, Block& b, HydroLineScratch& scratch) {
+  block_fluxes_body(eos, s, g, b, scratch);
+}
+#if REMNANT_HAVE_AVX2_KERNELS
+template <class E>
+REMNANT_AVX2_KERNEL void block_fluxes_avx2(const E& eos, const RhsSettings& s, const Groups& g, Block& b,
+                                           HydroLineScratch& scratch) {
+  block_fluxes_body(eos, s, g, b, scratch);
+}
+#endif
+template <class E>
+void block_fluxes(const E& eos, const RhsSettings& s, const Groups& g, Block& b) {
+  thread_local HydroLineScratch scratch;
+#if REMNANT_HAVE_AVX2_KERNELS
+  if (avx2_kernels()) return block_fluxes_avx2(eos, s, g, b, scratch);
+#endif
+  block_fluxes_portable(eos, s, g, b, scratch);
 }
 
 }  // namespace
