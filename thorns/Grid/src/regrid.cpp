@@ -194,6 +194,8 @@ std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std
         prolong_face_vector(old_block(o.old_gids[0]), *nb, vec, new_forest.dimension(), kept);
         continue;
       }
+      // A group without ghosts ('ghosts: 0', prolongation none) is scratch: a new child starts at zero.
+      if (spec.ghosts == 0 && o.kind == Source::parent) continue;
       const auto stagger = effective_stagger(spec.centering, new_forest.dimension());
       const GlobalBox interior = interior_box(new_forest, key, stagger);
       for (std::int64_t src_gid : o.old_gids) {

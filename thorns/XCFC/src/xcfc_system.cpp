@@ -83,7 +83,9 @@ void XcfcSolver::compute_A(XcfcState& st) {
     const std::vector<CompactChristoffels>& gamma = geo.christoffels(n);
     for_share_cells(mg_, n, [&](std::size_t q, std::size_t p, int, int, int) {
       const Point3& f = pg.frames().f[p];
-      const Christoffels G = expand(gamma[q]);
+      // Cartesian parts store no symbols (all zero): the same arithmetic with zeros.
+      static const CompactChristoffels flat{};
+      const Christoffels G = expand(gamma.empty() ? flat : gamma[q]);
       double X[3], D[3][3];  // D[a][b] = nabla_a X^b
       for (int b = 0; b < 3; ++b) X[b] = g[b].part[n][p];
       for (int a = 0; a < 3; ++a)
