@@ -72,8 +72,7 @@ struct Reader {
   }
 
   // `ghosts: N` (0..8): fewer ghost layers than the Grid's. Evolved groups need the Grid's (their
-  // ghosts are synchronised), and a group without any cannot be prolonged (the prolongation reads
-  // one layer around the parent's interior).
+  // ghosts are synchronised).
   int ghost_layers(const YAML::Node& n, const VariableGroupSpec& g) const {
     const std::string s = n.IsScalar() ? n.Scalar() : "<not a number>";
     static const std::regex digits("[0-8]");
@@ -82,9 +81,6 @@ struct Reader {
     const int v = s[0] - '0';
     if (g.role == VariableRole::evolved)
       throw InputError(at(n), "evolved group '" + g.name + "' cannot declare 'ghosts': MoL's groups keep the Grid's ghost zones");
-    if (v == 0 && g.prolongation != "none")
-      throw InputError(at(n), "group '" + g.name + "' with 'ghosts: 0' needs 'prolongation: none' (prolongation reads one "
-                              "ghost layer of the parent; declare ghosts: 1 to keep it)");
     return v;
   }
 

@@ -109,12 +109,12 @@ TEST(ThornSpec, SingleComponentOfAVector) {
                            {"a.yaml:3:", "<name>[N]"});
 }
 
-// `ghosts: N` (issue 21, memory): fewer ghost layers for groups no one synchronises; bad values,
-// evolved groups and unprolongable groups are refused with the file and line.
+// `ghosts: N` (issue 21, memory): fewer ghost layers for groups no one synchronises; bad values
+// and evolved groups are refused with the file and line.
 TEST(ThornSpec, GhostLayersPerGroup) {
   const auto t = parse_thorn_spec(
       "thorn: A\nvariables:\n  - {group: u, tensor: [scalar u]}\n  - {group: f, tensor: [scalar f], ghosts: 1}\n"
-      "  - {group: r, tensor: [scalar r], ghosts: 0, prolongation: none}\n",
+      "  - {group: r, tensor: [scalar r], ghosts: 0}\n",
       "a.yaml");
   EXPECT_EQ(t.variables[0].ghosts, -1) << "absent: the Grid's ghost zones";
   EXPECT_EQ(t.variables[1].ghosts, 1);
@@ -124,6 +124,4 @@ TEST(ThornSpec, GhostLayersPerGroup) {
                              {"a.yaml:3:", "ghosts", "of group 'u'", "0 to 8"});
   expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - {group: u, tensor: [scalar u], role: evolved, rhs: r, ghosts: 1}\n  - {group: r, tensor: [scalar r]}\n", "a.yaml"); },
                            {"a.yaml:3:", "evolved group 'u' cannot declare 'ghosts'"});
-  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - {group: r, tensor: [scalar r], ghosts: 0}\n", "a.yaml"); },
-                           {"a.yaml:3:", "'ghosts: 0' needs 'prolongation: none'"});
 }
