@@ -1,5 +1,6 @@
 // Storage of one mesh block: per variable group, ncomp contiguous arrays (component-major), each
 // with ghost zones on both sides, i fastest.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -23,8 +24,13 @@ Block::Block(std::int64_t gid_, int level_, std::array<std::int64_t, 3> index_,
     : gid(gid_), level(level_), index(index_), n(n_), ng(ng_), lo(lo_), dx(dx_), vars_(&vars) {
   data_.reserve(static_cast<std::size_t>(vars.size()));
   points_.reserve(static_cast<std::size_t>(vars.size()));
+  ghosts_.reserve(static_cast<std::size_t>(vars.size()));
   for (const auto& group : vars.groups()) {
-    const auto e = extent(group.centering);
+    std::array<int, 3> g = ng;
+    if (group.ghosts >= 0)
+      for (auto& layers : g) layers = std::min(layers, group.ghosts);
+    ghosts_.push_back(g);
+    const auto e = group_extent(group.id);
     const auto points = static_cast<std::size_t>(e[0]) * static_cast<std::size_t>(e[1]) *
                         static_cast<std::size_t>(e[2]);
     points_.push_back(points);
@@ -96,18 +102,30 @@ std::array<int, 3> Block::extent(Centering c) const {
   return e;
 }
 
+std::array<int, 3> Block::group_extent(int group) const {
+  const auto stagger = staggering(vars_->group(group).centering);
+  const auto& g = ghosts(group);
+  std::array<int, 3> e{};
+  for (int d = 0; d < 3; ++d) {
+    const auto i = static_cast<std::size_t>(d);
+    e[i] = n[i] + 2 * g[i] + (direction_used(n, ng, d) ? stagger[i] : 0);
+  }
+  return e;
+}
+
 Field Block::field(int group, int comp) {
   const auto& spec = vars_->group(group);
   if (comp < 0 || comp >= spec.ncomp())
     throw std::out_of_range("Block::field: component " + std::to_string(comp) + " of group '" +
                             spec.full_name() + "', which has " + std::to_string(spec.ncomp()));
-  const auto e = extent(spec.centering);
+  const auto e = group_extent(group);
+  const auto& g = ghosts(group);
   Field f;
   f.sj = e[0];
   f.sk = static_cast<std::ptrdiff_t>(e[0]) * e[1];
   f.origin = data(group) + static_cast<std::ptrdiff_t>(comp) *
                                static_cast<std::ptrdiff_t>(points_per_component(group)) +
-             ng[0] + ng[1] * f.sj + ng[2] * f.sk;
+             g[0] + g[1] * f.sj + g[2] * f.sk;
   return f;
 }
 

@@ -71,8 +71,22 @@ struct Reader {
     return s;
   }
 
+  // `ghosts: N` (0..8): fewer ghost layers than the Grid's. Evolved groups need the Grid's (their
+  // ghosts are synchronised).
+  int ghost_layers(const YAML::Node& n, const VariableGroupSpec& g) const {
+    const std::string s = n.IsScalar() ? n.Scalar() : "<not a number>";
+    static const std::regex digits("[0-8]");
+    if (!std::regex_match(s, digits))
+      throw InputError(at(n), "ghosts '" + s + "' of group '" + g.name + "' is not an integer from 0 to 8");
+    const int v = s[0] - '0';
+    if (g.role == VariableRole::evolved)
+      throw InputError(at(n), "evolved group '" + g.name + "' cannot declare 'ghosts': MoL's groups keep the Grid's ghost zones");
+    return v;
+  }
+
   VariableGroupSpec variable(const YAML::Node& n, const std::string& thorn) const {
-    check_keys(n, {"group", "centering", "tensor", "basis", "role", "rhs", "checkpoint", "prolongation", "if", "description"},
+    check_keys(n, {"group", "centering", "tensor", "basis", "role", "rhs", "checkpoint", "prolongation", "ghosts", "if",
+                "description"},
                "a variable group");
     VariableGroupSpec g;
     g.thorn = thorn;
@@ -134,6 +148,7 @@ struct Reader {
       if (std::find(prolongations.begin(), prolongations.end(), g.prolongation) == prolongations.end())
         throw InputError(at(n["prolongation"]), "prolongation '" + g.prolongation + "' is not one of: " + join(prolongations));
     }
+    if (n["ghosts"]) g.ghosts = ghost_layers(n["ghosts"], g);
     if (n["basis"]) {
       const std::string b = str(n["basis"], "basis");
       if (b != "coordinate" && b != "cartesian")

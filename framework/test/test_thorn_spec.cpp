@@ -108,3 +108,20 @@ TEST(ThornSpec, SingleComponentOfAVector) {
   expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - {group: u, tensor: [\"scalar u[1]\"]}\n", "a.yaml"); },
                            {"a.yaml:3:", "<name>[N]"});
 }
+
+// `ghosts: N` (issue 21, memory): fewer ghost layers for groups no one synchronises; bad values
+// and evolved groups are refused with the file and line.
+TEST(ThornSpec, GhostLayersPerGroup) {
+  const auto t = parse_thorn_spec(
+      "thorn: A\nvariables:\n  - {group: u, tensor: [scalar u]}\n  - {group: f, tensor: [scalar f], ghosts: 1}\n"
+      "  - {group: r, tensor: [scalar r], ghosts: 0}\n",
+      "a.yaml");
+  EXPECT_EQ(t.variables[0].ghosts, -1) << "absent: the Grid's ghost zones";
+  EXPECT_EQ(t.variables[1].ghosts, 1);
+  EXPECT_EQ(t.variables[2].ghosts, 0);
+  for (const std::string bad : {"-1", "9", "x", "1.5", "[1]"})
+    expect_error<InputError>([&] { parse_thorn_spec("thorn: A\nvariables:\n  - {group: u, tensor: [scalar u], ghosts: " + bad + "}\n", "a.yaml"); },
+                             {"a.yaml:3:", "ghosts", "of group 'u'", "0 to 8"});
+  expect_error<InputError>([] { parse_thorn_spec("thorn: A\nvariables:\n  - {group: u, tensor: [scalar u], role: evolved, rhs: r, ghosts: 1}\n  - {group: r, tensor: [scalar r]}\n", "a.yaml"); },
+                           {"a.yaml:3:", "evolved group 'u' cannot declare 'ghosts'"});
+}

@@ -45,8 +45,12 @@ class Block {
 
   // Cell-centre coordinate of index i in direction d (works for ghosts too).
   double x(int d, int i) const { return lo[d] + (i + 0.5) * dx[d]; }
-  // Points per direction including ghosts, for a centering.
+  // Points per direction including the Grid's ghosts, for a centering.
   std::array<int, 3> extent(Centering c) const;
+  // Ghost layers per direction that `group` holds: ng, or fewer where its thorn.yaml says `ghosts: N`.
+  const std::array<int, 3>& ghosts(int group) const { return ghosts_[static_cast<std::size_t>(group)]; }
+  // Points per direction of `group`'s arrays, its own ghosts included.
+  std::array<int, 3> group_extent(int group) const;
   Field field(int group, int comp);
   double* data(int group) { return data_[static_cast<std::size_t>(group)].data(); }
   std::size_t size(int group) const { return data_[static_cast<std::size_t>(group)].size(); }
@@ -92,6 +96,7 @@ class Block {
   const VariableRegistry* vars_;
   std::vector<std::vector<double>> data_;   // per group: ncomp * points, component-major
   std::vector<std::size_t> points_;
+  std::vector<std::array<int, 3>> ghosts_;  // per group
 };
 
 enum class ReductionKind { minimum, maximum, sum, volume_integral, norm1, norm2 };

@@ -45,6 +45,9 @@ struct VariableGroupSpec {
   int rhs_id = -1;                 // resolved id of the RHS group
   bool checkpoint = false;
   std::string prolongation = "conservative_linear";
+  // thorn.yaml `ghosts: N`: the group holds min(N, Grid ghost zones) ghost layers; -1 (absent): the
+  // Grid's. Fewer for scratch that no one synchronises (fluxes, right-hand sides, histories).
+  int ghosts = -1;
   // Components of vectors and tensors along the Cartesian axes (x, y, z) rather than the grid's
   // coordinate basis (thorn.yaml `basis: cartesian`): symmetry images take Cartesian parities.
   bool cartesian_basis = false;

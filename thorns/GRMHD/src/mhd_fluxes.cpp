@@ -125,8 +125,10 @@ template <int D, class E>
       }
       const std::array<double, 3> flux_weight =
           cartesian ? std::array<double, 3>{1.0, 1.0, 1.0} : momentum_flux_weights(b, D, idx.data(), x);
-      const double* pbn = bn.origin + fbase;
-      for (int f = 0; f <= n; ++f) L.work[kWorkBNormal][f] = pbn[f * fields.flux_stride] * normal_factor / L.face.psi6[f];
+      // The face field keeps the Grid's ghosts, the flux groups fewer (thorn.yaml): its own offsets.
+      const double* pbn = bn.origin + (idx[0] + idx[1] * bn.sj + idx[2] * bn.sk);
+      const std::ptrdiff_t bn_stride = D == 0 ? 1 : D == 1 ? bn.sj : bn.sk;
+      for (int f = 0; f <= n; ++f) L.work[kWorkBNormal][f] = pbn[f * bn_stride] * normal_factor / L.face.psi6[f];
       if (!cartesian)
         for (int f = 0; f <= n; ++f) {
           // Back to coordinate components; on a face on the axis or at the origin (zero factor) the

@@ -144,7 +144,7 @@ inline void move_derivatives_to_centroid(MetricDerivatives& dm, const Field* met
 
 template <bool Mhd, bool Shift>
 [[gnu::always_inline]] inline void sources_row_body(const Field* prim, const Field* met, const Field* bf,
-                                                   const Field* rhs, const RowDivergence& dv, std::ptrdiff_t o0,
+                                                   double* const* rhs, const RowDivergence& dv, std::ptrdiff_t o0,
                                                    const std::array<std::ptrdiff_t, 3>& st,
                                                    const std::array<double, 3>& inv2dx, int n) {
   const std::array<std::array<double, 3>, 3> df{};
@@ -174,13 +174,13 @@ template <bool Mhd, bool Shift>
       gravity_sources(fs, pm, psi, dm, df, nullptr, Shift, src);
     }
     const double p2 = psi * psi, psi6 = p2 * p2 * p2;
-    rhs[kD].origin[o] = out[kD];
-    rhs[kDYe].origin[o] = out[kDYe];
-    for (int c = kS1; c <= kTau; ++c) rhs[c].origin[o] = out[c] + psi6 * src[c];
+    rhs[kD][i] = out[kD];
+    rhs[kDYe][i] = out[kDYe];
+    for (int c = kS1; c <= kTau; ++c) rhs[c][i] = out[c] + psi6 * src[c];
   }
 }
 template <bool Mhd, bool Shift>
-[[gnu::flatten]] void cartesian_sources_row(const Field* prim, const Field* met, const Field* bf, const Field* rhs,
+[[gnu::flatten]] void cartesian_sources_row(const Field* prim, const Field* met, const Field* bf, double* const* rhs,
                                             const RowDivergence& dv, std::ptrdiff_t o0,
                                             const std::array<std::ptrdiff_t, 3>& st,
                                             const std::array<double, 3>& inv2dx, int n) {
@@ -189,7 +189,7 @@ template <bool Mhd, bool Shift>
 #if REMNANT_HAVE_AVX2_KERNELS
 template <bool Mhd, bool Shift>
 REMNANT_AVX2_KERNEL void cartesian_sources_row_avx2(const Field* prim, const Field* met, const Field* bf,
-                                                    const Field* rhs, const RowDivergence& dv, std::ptrdiff_t o0,
+                                                    double* const* rhs, const RowDivergence& dv, std::ptrdiff_t o0,
                                                     const std::array<std::ptrdiff_t, 3>& st,
                                                     const std::array<double, 3>& inv2dx, int n) {
   sources_row_body<Mhd, Shift>(prim, met, bf, rhs, dv, o0, st, inv2dx, n);
@@ -289,6 +289,9 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
   for (int c = 0; c < kNumCons; ++c) row[c] = row_storage.data() + static_cast<std::size_t>(c) * b.n[0];
   for (int k = 0; k < b.n[2]; ++k)
     for (int j = 0; j < b.n[1]; ++j) {
+      // cons_rhs holds fewer ghosts than the metric and primitives (thorn.yaml): its own rows.
+      double* rhs_row[kNumCons];
+      for (int c = 0; c < kNumCons; ++c) rhs_row[c] = &rhs[c](0, j, k);
       if (cartesian_3d) {
         RowDivergence dv;
         for (int d = 0; d < 3; ++d) {
@@ -312,7 +315,7 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
         dv.area_x = ff[0];
         dv.volume_x = vw[0];
         const std::ptrdiff_t o0 = j * met[0].sj + k * met[0].sk;
-        row_function(prim, met, bf, rhs, dv, o0, st, inv2dx, b.n[0]);
+        row_function(prim, met, bf, rhs_row, dv, o0, st, inv2dx, b.n[0]);
         continue;
       }
       // Flux divergence: (A+ F+ - A- F-) / V with A/V reduced to the 1D factors of direction d.
@@ -377,9 +380,9 @@ void divergence_and_sources(const Groups& g, Block& b, int bvec, bool cartesian_
               src[kS1 + d] += well_balanced_correction(wb, prim, met, o, st[d], fs, psi, alpha, dm.dalpha[d], dm.dpsi[d],
                                                        ff[d][id[d]], ff[d][id[d] + 1], vw[d][id[d]], !cartesian);
         const double p2 = psi * psi, psi6 = p2 * p2 * p2;
-        rhs[kD].origin[o] = out[kD];
-        rhs[kDYe].origin[o] = out[kDYe];
-        for (int c = kS1; c <= kTau; ++c) rhs[c].origin[o] = out[c] + psi6 * src[c];
+        rhs_row[kD][i] = out[kD];
+        rhs_row[kDYe][i] = out[kDYe];
+        for (int c = kS1; c <= kTau; ++c) rhs_row[c][i] = out[c] + psi6 * src[c];
       }
     }
 }

@@ -111,6 +111,10 @@ void AmrGrid::synchronize(std::span<const int> groups) {
     if (c == Centering::vertex)
       throw RunError("Grid: synchronising " + std::string(to_string(c)) + "-centred group '" + spec.full_name() +
                      "' is not supported; cell-, face- and edge-centred groups are");
+    if (spec.ghosts >= 0 && spec.ghosts < config_.ghost_zones)
+      throw RunError("Grid: group '" + spec.full_name() + "' holds " + std::to_string(spec.ghosts) +
+                     " ghost layers ('ghosts' at " + spec.where.str() + ") but Grid::ghost_zones is " + std::to_string(config_.ghost_zones) +
+                     "; its ghosts cannot be synchronised: read it on the interior, or drop 'ghosts'");
     const auto stagger = effective_stagger(c, config_.dimension);
     for (int d = 0; d < config_.dimension; ++d)
       if (stagger[static_cast<std::size_t>(d)] && config_.max_level > 0 &&

@@ -33,9 +33,10 @@ std::vector<GroupMemory> group_memory(const GridConfig& c, const VariableRegistr
   for (const auto& g : vars.groups()) {
     const auto st = staggering(g.centering);
     double points = 1, interior = 1;
+    const int ghosts = g.ghosts >= 0 ? std::min(g.ghosts, c.ghost_zones) : c.ghost_zones;
     for (int d = 0; d < c.dimension; ++d) {
       const auto ud = static_cast<std::size_t>(d);
-      points *= c.block_size[ud] + 2 * c.ghost_zones + st[ud];
+      points *= c.block_size[ud] + 2 * ghosts + st[ud];
       interior *= c.block_size[ud] + st[ud];
     }
     const bool is_evolved = std::find(evolved.begin(), evolved.end(), g.id) != evolved.end();

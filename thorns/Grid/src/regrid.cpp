@@ -51,6 +51,26 @@ std::vector<std::tuple<int, bool, std::int64_t>> kept_face_neighbours(const Fore
   return out;
 }
 
+// Component c of group v of block s with one layer of zeros around its interior points, in
+// `storage`: the prolongation of a group without ghosts (thorn.yaml `ghosts: 0`) reads one layer
+// around the parent, and such groups never write ghosts, so that layer held zeros when they had it.
+Field zero_padded(Block& s, int v, int c, const std::array<int, 3>& stagger, int dim, std::vector<double>& storage) {
+  std::array<int, 3> n{1, 1, 1}, e{1, 1, 1};
+  for (int d = 0; d < dim; ++d) {
+    const auto ud = static_cast<std::size_t>(d);
+    n[ud] = s.n[ud] + stagger[ud];
+    e[ud] = n[ud] + 2;
+  }
+  storage.assign(static_cast<std::size_t>(e[0]) * static_cast<std::size_t>(e[1]) * static_cast<std::size_t>(e[2]), 0.0);
+  const std::ptrdiff_t sj = e[0], sk = static_cast<std::ptrdiff_t>(e[0]) * e[1];
+  const Field p{storage.data() + (dim > 0 ? 1 : 0) + (dim > 1 ? sj : 0) + (dim > 2 ? sk : 0), sj, sk};
+  const Field f = s.field(v, c);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) p(i, j, k) = f(i, j, k);
+  return p;
+}
+
 Origin origin_of(const Forest& old_forest, const BlockKey& k) {
   const int dim = old_forest.dimension();
   if (const auto g = old_forest.find(k.level, k.index); g >= 0) return {Source::same, {g}};
@@ -164,6 +184,7 @@ std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std
 
   std::vector<std::unique_ptr<Block>> out;
   out.reserve(static_cast<std::size_t>(new_count));
+  std::vector<double> padded;  // zero_padded's storage, reused
   for (std::int64_t i = 0; i < new_count; ++i) {
     const std::int64_t gid = new_first + i;
     const BlockKey& key = new_forest.key(gid);
@@ -222,8 +243,10 @@ std::vector<std::unique_ptr<Block>> migrate_blocks(const Forest& old_forest, std
           t.dst_box.hi[d] = static_cast<int>(part.hi[d] - t.dst_origin[d]);
         }
         Block& s = old_block(src_gid);
+        const bool pad = spec.ghosts == 0 && t.kind == TransferKind::prolong;
         for (int c = 0; c < spec.ncomp(); ++c)
-          apply_transfer(t, s.field(v, c), nb->field(v, c), 1.0, stagger, new_forest.dimension(), geometry);
+          apply_transfer(t, pad ? zero_padded(s, v, c, stagger, new_forest.dimension(), padded) : s.field(v, c),
+                         nb->field(v, c), 1.0, stagger, new_forest.dimension(), geometry);
       }
     }
     out.push_back(std::move(nb));

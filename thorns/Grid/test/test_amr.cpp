@@ -166,6 +166,67 @@ TEST(Amr, RegridConservesAndRestrictionUndoesProlongation) {
   EXPECT_LT(worst, 1e-14);
 }
 
+// Memory (issue 21, goal 7): groups with fewer ghosts (thorn.yaml `ghosts`) regrid as before: one
+// layer is all that prolongation reads, so a `ghosts: 1` group prolongs to the same bits as a group
+// with the Grid's ghosts holding the same values, and a `ghosts: 0` group to those of one whose
+// first ghost layer holds zeros (as the never-written ghosts of such groups did).
+TEST(Amr, GroupsWithFewerGhostsRegrid) {
+  GridConfig c = spherical_box(2);
+  c.regions.clear();
+  VariableRegistry vars;
+  const int full = add_group(vars, "u", TensorKind::scalar);
+  const int one = add_group(vars, "w", TensorKind::scalar);
+  const int none = add_group(vars, "r", TensorKind::scalar);
+  vars.group(full).role = vars.group(one).role = vars.group(none).role = VariableRole::auxiliary;
+  vars.group(one).ghosts = 1;
+  vars.group(one).prolongation = "linear";
+  vars.group(none).ghosts = 0;
+  vars.group(none).prolongation = "linear";
+  AmrGrid grid(c, vars, MPI_COMM_SELF);
+  auto f = [](double x, double y) { return 1 + std::exp(-8 * (x - 1) * (x - 1)) * std::cos(3 * y); };
+  for (Block* b : grid.local_blocks())
+    for (int g : {full, one, none}) {
+      const auto& ng = b->ghosts(g);
+      for (int j = -ng[1]; j < b->n[1] + ng[1]; ++j)
+        for (int i = -ng[0]; i < b->n[0] + ng[0]; ++i) {
+          const bool inside = i >= 0 && i < b->n[0] && j >= 0 && j < b->n[1];
+          const bool first_layer = i >= -1 && i <= b->n[0] && j >= -1 && j <= b->n[1];
+          b->field(g, 0)(i, j, 0) = inside ? f(b->centroid(0, i), b->centroid(1, j)) : first_layer ? 0.0 : std::nan("");
+        }
+    }
+  std::vector<BlockKey> refined;
+  int parents = 0;
+  for (const BlockKey& k : grid.all_blocks()) {
+    if (k.index[0] == 1 && k.index[1] <= 1) {
+      ++parents;
+      for (int c1 = 0; c1 < 2; ++c1)
+        for (int c0 = 0; c0 < 2; ++c0) refined.push_back({1, {2 * k.index[0] + c0, 2 * k.index[1] + c1, 0}});
+    } else {
+      refined.push_back(k);
+    }
+  }
+  const auto base = grid.all_blocks();
+  ASSERT_TRUE(grid.set_leaves(refined));
+  int children = 0;
+  for (Block* b : grid.local_blocks()) {
+    EXPECT_EQ(b->size(one), 10u * 10u);
+    EXPECT_EQ(b->size(none), 8u * 8u);
+    for_interior(*b, [&](int i, int j, int k) {
+      ASSERT_EQ(b->field(one, 0)(i, j, k), b->field(full, 0)(i, j, k)) << "level " << b->level << " (" << i << "," << j << ")";
+      ASSERT_EQ(b->field(none, 0)(i, j, k), b->field(full, 0)(i, j, k)) << "level " << b->level << " (" << i << "," << j << ")";
+    });
+    children += b->level == 1;
+  }
+  EXPECT_GT(parents, 0);
+  EXPECT_EQ(children, 4 * parents);
+  ASSERT_TRUE(grid.set_leaves(base));
+  for (Block* b : grid.local_blocks())
+    for_interior(*b, [&](int i, int j, int k) {
+      ASSERT_EQ(b->field(one, 0)(i, j, k), b->field(full, 0)(i, j, k));
+      ASSERT_EQ(b->field(none, 0)(i, j, k), b->field(full, 0)(i, j, k));
+    });
+}
+
 // Memory (issue 21, goal 7): a regrid moves the blocks it keeps instead of copying them, so old and
 // new storage coexist only for the blocks that change (a head-on run's peak RSS was 43 old + 64 new
 // blocks at its initial regrid: 321 MB, then 276 MB). The kept blocks are the same objects, with

@@ -50,6 +50,48 @@ TEST(Block, FieldIsComponentMajorWithOriginAtFirstInteriorCell) {
   EXPECT_THROW(b.field(g, 3), std::out_of_range);
 }
 
+// thorn.yaml `ghosts: N` (issue 21, memory): such a group is allocated with min(N, ng) ghost layers,
+// its own strides and origin; the others keep the block's.
+TEST(Block, GroupsDeclaringFewerGhostsAreAllocatedWithThem) {
+  VariableRegistry vars;
+  const int full = add_group(vars, "u", TensorKind::vector);
+  const int none = add_group(vars, "rhs", TensorKind::vector);
+  const int one = add_group(vars, "flux", TensorKind::scalar, Centering::face_x);
+  const int edge = add_group(vars, "emf", TensorKind::scalar, Centering::edge_z);
+  const int many = add_group(vars, "w", TensorKind::scalar);
+  vars.group(none).ghosts = 0;
+  vars.group(one).ghosts = 1;
+  vars.group(edge).ghosts = 0;
+  vars.group(many).ghosts = 8;  // more than the Grid's: the Grid's
+  Block b(0, 0, {0, 0, 0}, {8, 6, 4}, {3, 3, 3}, {0, 0, 0}, {1, 1, 1}, vars);
+  EXPECT_EQ(b.size(full), 3u * 14u * 12u * 10u);
+  EXPECT_EQ(b.size(none), 3u * 8u * 6u * 4u) << "no ghosts: the interior only";
+  EXPECT_EQ(b.size(one), 11u * 8u * 6u) << "one layer, plus the upper x face";
+  EXPECT_EQ(b.size(edge), 9u * 7u * 4u);
+  EXPECT_EQ(b.size(many), 14u * 12u * 10u);
+  EXPECT_EQ(b.ghosts(none), (std::array<int, 3>{0, 0, 0}));
+  EXPECT_EQ(b.ghosts(one), (std::array<int, 3>{1, 1, 1}));
+  EXPECT_EQ(b.group_extent(one), (std::array<int, 3>{11, 8, 6}));
+  const Field r = b.field(none, 2);
+  EXPECT_EQ(r.sj, 8);
+  EXPECT_EQ(r.sk, 48);
+  EXPECT_EQ(&r(0, 0, 0), b.data(none) + 2 * 8 * 6 * 4);
+  EXPECT_EQ(&r(7, 5, 3), b.data(none) + b.size(none) - 1);
+  const Field f = b.field(one, 0);
+  EXPECT_EQ(&f(-1, -1, -1), b.data(one));
+  EXPECT_EQ(&f(9, 6, 4), b.data(one) + b.size(one) - 1);
+}
+
+// 2D: unused directions have no ghosts and no staggering for such groups either.
+TEST(Block, FewerGhostsIn2D) {
+  VariableRegistry vars;
+  const int one = add_group(vars, "flux", TensorKind::scalar, Centering::face_y);
+  vars.group(one).ghosts = 1;
+  Block b(0, 0, {0, 0, 0}, {8, 4, 1}, {3, 3, 0}, {0, 0, 0}, {1, 1, 1}, vars);
+  EXPECT_EQ(b.group_extent(one), (std::array<int, 3>{10, 7, 1}));
+  EXPECT_EQ(b.size(one), 70u);
+}
+
 TEST(Block, CellCentres) {
   VariableRegistry vars;
   Block b(0, 0, {1, 0, 0}, {4, 1, 1}, {2, 0, 0}, {0.5, 0, 0}, {0.25, 1, 1}, vars);

@@ -88,5 +88,24 @@ TEST(GhostExchange, VertexCentredGroupsAreRefusedClearly) {
   }
 }
 
+// A group declaring fewer ghosts than the Grid's (thorn.yaml `ghosts`) has none to synchronise.
+TEST(GhostExchange, GroupsWithFewerGhostsAreRefusedClearly) {
+  GridConfig c;
+  c.ncells = {16, 16, 16};
+  c.block_size = {8, 8, 8};
+  VariableRegistry vars;
+  const int flux = add_group(vars, "F", TensorKind::scalar, Centering::face_x);
+  vars.group(flux).ghosts = 1;
+  AmrGrid grid(c, vars, MPI_COMM_SELF);
+  const std::vector<int> groups = {flux};
+  try {
+    grid.synchronize(groups);
+    FAIL() << "expected a RunError";
+  } catch (const RunError& e) {
+    EXPECT_NE(std::string(e.what()).find("group 'Test::F' holds 1 ghost layers"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("Grid::ghost_zones is 3"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace remnant::grid::test

@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 #include "Grid/amr_grid.hpp"
 #include "config.hpp"
@@ -132,4 +133,31 @@ TEST(MemoryEstimate, GroupTableMatchesTheBlockAllocation) {
   EXPECT_NE(table.find("T::u"), std::string::npos) << table;
   EXPECT_NE(table.find("       29 B/cell (+RK)"), std::string::npos) << table;
   EXPECT_NE(table.find("       71 B/cell\n"), std::string::npos) << table;
+}
+
+// Groups that declare fewer ghosts (thorn.yaml `ghosts`) count with them, as the Block allocates.
+TEST(MemoryEstimate, GroupTableCountsEachGroupsOwnGhosts) {
+  GridConfig c;
+  c.dimension = 3;
+  c.ncells = {32, 32, 32};
+  c.block_size = {16, 16, 16};
+  c.ghost_zones = 3;
+  VariableRegistry vars;
+  for (const auto& [name, centering, ghosts] :
+       {std::tuple{"bx", Centering::face_x, 0}, std::tuple{"f", Centering::face_y, 1}, std::tuple{"h", Centering::cell, 2}}) {
+    VariableGroupSpec g;
+    g.thorn = "T";
+    g.name = name;
+    g.centering = centering;
+    g.ghosts = ghosts;
+    g.components = expand_tensor(TensorKind::scalar, name);
+    vars.add(g);
+  }
+  const auto groups = group_memory(c, vars);
+  Block b(0, 0, {0, 0, 0}, {16, 16, 16}, {3, 3, 3}, {0, 0, 0}, {1, 1, 1}, vars);
+  for (int g = 0; g < vars.size(); ++g)
+    EXPECT_DOUBLE_EQ(groups[static_cast<std::size_t>(g)].bytes, static_cast<double>(b.size(g) * sizeof(double)));
+  EXPECT_DOUBLE_EQ(groups[0].bytes, 17.0 * 16 * 16 * 8);
+  EXPECT_DOUBLE_EQ(groups[1].bytes, 18.0 * 19 * 18 * 8);
+  EXPECT_DOUBLE_EQ(groups[2].bytes, 20.0 * 20 * 20 * 8);
 }

@@ -141,6 +141,9 @@ void step_vector_potential(Context& ctx) {
   SolveInProgress& s = *rt.solve;
   s.src = gather_sources(s.br, s.g);
   s.sv.solve_vector_potential(s.src.E, s.src.S, s.st, s.stats, s.set);
+  // X^i served only A^ij (its potentials are the warm start, kept): freed for the later steps
+  // (issue 21, memory: three composite fields fewer at the shift solve's peak).
+  for (CompositeField& x : s.st.X) x = CompositeField{};
 }
 
 void step_conformal_factor(Context& ctx) {

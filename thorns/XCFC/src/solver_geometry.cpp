@@ -25,7 +25,10 @@ SolverGeometry::SolverGeometry(const CompositeMultigrid& mg) {
     const PartGeometry& pg = mg.part(n);
     const GridShape& s = pg.shape;
     shapes_.push_back(s);
-    std::vector<CompactChristoffels>& cells = christoffels_.emplace_back(s.cells());
+    // Cartesian parts: every symbol is zero; none stored (48 bytes per cell otherwise).
+    std::vector<CompactChristoffels>& cells =
+        christoffels_.emplace_back(s.coordinates == CoordinateSystem::cartesian ? 0 : s.cells());
+    if (cells.empty()) continue;
     for_part_cells(pg, [&](std::size_t q, std::size_t, int i, int j, int k) {
       cells[q] = compact(coords::christoffels(s.coordinates, s.point(i, j, k)));
     });

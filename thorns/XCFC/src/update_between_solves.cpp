@@ -19,7 +19,7 @@ void XcfcSolver::vector_potential_from_warm_start(XcfcState& st) {
     const auto& stride = g.strides;
     const auto& gc = gchi.part[n];
     for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
-      const Point3& f = g.frames().f[p];
+      const Point3& f = g.frames().diagonal(p);
       for (int d = 0; d < g.shape.dimension; ++d)
         st.X[d].part[n][q] -= 0.25 * (gc[p + stride[d]] - gc[p - stride[d]]) / (2 * g.shape.dx[d] * f[d]);
     });
@@ -60,7 +60,7 @@ void load_update_A(Context& ctx, const GridBridge& br, XcfcSolver& sv, XcfcState
   for (int n = 0; n < mg.parts(); ++n) {
     const PartGeometry& g = mg.part(n);
     for_part_cells(g, [&](std::size_t q, std::size_t p, int, int, int) {
-      const Point3& f = g.frames().f[p];
+      const Point3& f = g.frames().diagonal(p);
       double A2 = 0;
       for (int a = 0; a < 3; ++a)
         for (int b = a; b < 3; ++b) {

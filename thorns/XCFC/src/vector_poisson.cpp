@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "remnant/comm_counters.hpp"
@@ -59,7 +60,7 @@ VectorField sized(const CompositeMultigrid& mg, bool ghosted) {
   for (auto& c : out)
     for (int i = 0; i < mg.parts(); ++i) {
       const PartGeometry& g = mg.part(i);
-      c.part.emplace_back(ghosted ? g.frames().f.size() : g.shape.cells(), 0.0);
+      c.part.emplace_back(ghosted ? g.frames().points : g.shape.cells(), 0.0);
     }
   return out;
 }
@@ -74,7 +75,7 @@ VectorField to_cartesian(const CompositeMultigrid& mg, const VectorField& up) {
     const CellFrames& fr = g.frames();
     const auto &u0 = up[0].part[n], &u1 = up[1].part[n], &u2 = up[2].part[n];
     for_share_cells(mg, n, [&](std::size_t q, std::size_t p, int, int, int) {
-      const Matrix3& J = fr.J[p];
+      const Matrix3& J = fr.jacobian(p);
       for (int a = 0; a < 3; ++a)
         if (active[a]) out[a].part[n][q] = J[a][0] * u0[q] + J[a][1] * u1[q] + J[a][2] * u2[q];
     });
@@ -83,8 +84,8 @@ VectorField to_cartesian(const CompositeMultigrid& mg, const VectorField& up) {
   return out;
 }
 Point3 from_cartesian(const CellFrames& fr, std::size_t p, double V0, double V1, double V2) {
-  const Matrix3& J = fr.J[p];
-  const Point3& f = fr.f[p];
+  const Matrix3& J = fr.jacobian(p);
+  const Point3& f = fr.diagonal(p);
   Point3 v;
   for (int c = 0; c < 3; ++c) v[c] = (J[0][c] * V0 + J[1][c] * V1 + J[2][c] * V2) / f[c];
   return v;
@@ -112,7 +113,7 @@ VectorField to_cartesian_components(const CompositeMultigrid& mg, const VectorFi
   for (int n = 0; n < mg.parts(); ++n) {
     const CellFrames& fr = mg.part(n).frames();
     for_part_cells(mg.part(n), [&](std::size_t q, std::size_t p, int, int, int) {
-      const Matrix3& J = fr.J[p];
+      const Matrix3& J = fr.jacobian(p);
       const double v[3] = {up[0].part[n][q], up[1].part[n][q], up[2].part[n][q]};
       for (int a = 0; a < 3; ++a) {
         double V = 0;
@@ -129,8 +130,8 @@ VectorField to_coordinate_components(const CompositeMultigrid& mg, const VectorF
   for (int n = 0; n < mg.parts(); ++n) {
     const CellFrames& fr = mg.part(n).frames();
     for_part_cells(mg.part(n), [&](std::size_t q, std::size_t p, int, int, int) {
-      const Matrix3& J = fr.J[p];
-      const Point3& f = fr.f[p];
+      const Matrix3& J = fr.jacobian(p);
+      const Point3& f = fr.diagonal(p);
       const double V[3] = {cart[0].part[n][q], cart[1].part[n][q], cart[2].part[n][q]};
       for (int c = 0; c < 3; ++c) {
         double v = 0;
@@ -379,7 +380,9 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
                                       VectorField& X_up, const SolveSettings& settings) {
   const GridShape& s = mg.base_shape();
   VectorSolveStats stats;
-  const VectorField src = to_cartesian(mg, source_up);
+  // Moved into the equations once the monopoles are measured; each equation's source is freed after
+  // its solve (issue 21, memory: fewer composite fields alive at the solver's peak).
+  VectorField src = to_cartesian(mg, source_up);
   const CompositeField zero = mg.field();
   // The monopole of each component goes into a unit charge's potential M g; the rest falls off at
   // r^-2 (solved for B - M g). Its divergence's potential chi_1 (UnitCharge::p) tends to -M x / (8 pi r),
@@ -394,11 +397,12 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
     active[a] = cartesian_component_active(s, a);
     if (!active[a]) continue;
     eqs[a].boundary = cartesian_component_equation(s, a);
-    eqs[a].s0 = src[a];
     radius[a] = monopole_radius(s, eqs[a].boundary);
     unit[a] = UnitCharge(radius[a] > 0 ? radius[a] : 1.0);
   }
   if (radius[0] > 0 || radius[1] > 0 || radius[2] > 0) M = monopole_weights(mg, src, radius, unit, stats.monopole_cells);
+  for (int a = 0; a < 3; ++a)
+    if (active[a]) eqs[a].s0 = std::move(src[a]);
   const bool split = M[0] != 0 || M[1] != 0 || M[2] != 0;
   if (split) {
     // B += grad chi_1 / 4 - M g, s0 -= M q: on this rank's share, then completed.
@@ -427,6 +431,7 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
       continue;
     }
     stats.component[a] = mg.solve(eqs[a], warm.B[a], settings);
+    eqs[a].s0 = CompositeField{};
   }
   CompositeEquation chi;
   chi.boundary = chi_equation();
@@ -443,17 +448,17 @@ VectorSolveStats solve_vector_poisson(CompositeMultigrid& mg, const VectorField&
     });
     complete_fields(mg, {&warm.B[0], &warm.B[1], &warm.B[2]});
   }
-  const VectorField B_up = to_coordinate(mg, warm.B);
+  VectorField B_up = to_coordinate(mg, warm.B);
   stats.chi = mg.solve(chi, warm.chi, settings);
   // X^i = B^i - f^ii d_i chi / 4 (centred differences).
   const CompositeField gchi = mg.with_ghosts(chi.boundary, warm.chi, true);
-  X_up = B_up;
+  X_up = std::move(B_up);
   for (int n = 0; n < mg.parts(); ++n) {
     const PartGeometry& g = mg.part(n);
     const auto& st = g.strides;
     const auto& gc = gchi.part[n];
     for_share_cells(mg, n, [&](std::size_t q, std::size_t p, int, int, int) {
-      const Point3& f = g.frames().f[p];
+      const Point3& f = g.frames().diagonal(p);
       for (int d = 0; d < s.dimension; ++d) X_up[d].part[n][q] -= 0.25 * (gc[p + st[d]] - gc[p - st[d]]) / (2 * g.shape.dx[d] * f[d]);
     });
   }

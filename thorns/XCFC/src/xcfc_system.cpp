@@ -36,7 +36,7 @@ VectorField raise(const CompositeMultigrid& mg, const VectorField& dn, double fa
   for (int n = 0; n < mg.parts(); ++n) {
     const PartGeometry& g = mg.part(n);
     for_share_cells(mg, n, [&](std::size_t q, std::size_t p, int, int, int) {
-      const Point3& f = g.frames().f[p];
+      const Point3& f = g.frames().diagonal(p);
       for (int c = 0; c < 3; ++c) up[c].part[n][q] = factor * dn[c].part[n][q] / f[c];
     });
   }
@@ -82,8 +82,10 @@ void XcfcSolver::compute_A(XcfcState& st) {
     const auto& stride = pg.strides;
     const std::vector<CompactChristoffels>& gamma = geo.christoffels(n);
     for_share_cells(mg_, n, [&](std::size_t q, std::size_t p, int, int, int) {
-      const Point3& f = pg.frames().f[p];
-      const Christoffels G = expand(gamma[q]);
+      const Point3& f = pg.frames().diagonal(p);
+      // Cartesian parts store no symbols (all zero): the same arithmetic with zeros.
+      static const CompactChristoffels flat{};
+      const Christoffels G = expand(gamma.empty() ? flat : gamma[q]);
       double X[3], D[3][3];  // D[a][b] = nabla_a X^b
       for (int b = 0; b < 3; ++b) X[b] = g[b].part[n][p];
       for (int a = 0; a < 3; ++a)
@@ -192,7 +194,7 @@ void XcfcSolver::solve_shift(const CompositeField& E, const VectorField& S_dn, X
     const auto& stride = pg.strides;
     const auto& g = gw.part[n];
     for_share_cells(mg_, n, [&](std::size_t q, std::size_t p, int, int, int) {
-      const Point3& f = pg.frames().f[p];
+      const Point3& f = pg.frames().diagonal(p);
       double dw[3] = {0, 0, 0};
       for (int d = 0; d < s.dimension; ++d) dw[d] = (g[p + stride[d]] - g[p - stride[d]]) / (2 * s.dx[d]);
       for (int a = 0; a < 3; ++a) {

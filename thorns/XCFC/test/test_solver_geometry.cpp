@@ -47,9 +47,12 @@ TEST(XCFCSolverGeometry, ChristoffelsAreThoseOfTheCoordinates) {
     long long cells = 0;
     for (int n = 0; n < mg.parts(); ++n) {
       const GridShape& s = mg.part(n).shape;
+      // Cartesian parts store none (issue 21, memory): every symbol is zero there.
+      const bool cartesian = s.coordinates == CoordinateSystem::cartesian;
+      EXPECT_EQ(geo.christoffels(n).empty(), cartesian);
       for_part_cells(mg.part(n), [&](std::size_t q, std::size_t, int i, int j, int k) {
         const Christoffels want = coords::christoffels(s.coordinates, s.point(i, j, k));
-        const Christoffels got = expand(geo.christoffels(n)[q]);
+        const Christoffels got = expand(cartesian ? CompactChristoffels{} : geo.christoffels(n)[q]);
         ASSERT_EQ(std::memcmp(&want, &got, sizeof want), 0) << "part " << n << " cell " << i << " " << j << " " << k;
         ++cells;
       });

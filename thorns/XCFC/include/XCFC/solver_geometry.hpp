@@ -38,7 +38,7 @@ class SolverGeometry {
   // Whether this was built for mg's parts (same count, shapes and extents).
   bool current_for(const CompositeMultigrid& mg) const;
   int parts() const { return static_cast<int>(christoffels_.size()); }
-  // Per interior cell (for_part_cells' q) of part n.
+  // Per interior cell (for_part_cells' q) of part n; empty for a Cartesian part (all symbols zero).
   const std::vector<CompactChristoffels>& christoffels(int n) const { return christoffels_[static_cast<std::size_t>(n)]; }
 
  private:

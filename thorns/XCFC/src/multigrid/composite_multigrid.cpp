@@ -50,21 +50,17 @@ CompositeMultigrid::Impl::Impl(const CompositeLayout& l, MPI_Comm c, MultigridSt
       if (t == 0) {
         g.shared = &base.frames();
       } else {
-        g.own.J.assign(P.ghosted_size, Matrix3{});
-        g.own.f.assign(P.ghosted_size, Point3{1, 1, 1});
-        for (int k = -P.g[2]; k < P.shape.n[2] + P.g[2]; ++k)
-          for (int j = -P.g[1]; j < P.shape.n[1] + P.g[1]; ++j)
-            for (int i = -P.g[0]; i < P.shape.n[0] + P.g[0]; ++i) {
-              const Point3 x = P.shape.point(i, j, k);
-              const auto q = static_cast<std::size_t>(P.at(i, j, k));
-              g.own.J[q] = coords::jacobian(P.shape.coordinates, x);
-              g.own.f[q] = coords::metric_diagonal(P.shape.coordinates, x);
-            }
+        g.own = CellFrames::of(P.shape.coordinates, P.ghosted_size, [&](auto&& visit) {
+          for (int k = -P.g[2]; k < P.shape.n[2] + P.g[2]; ++k)
+            for (int j = -P.g[1]; j < P.shape.n[1] + P.g[1]; ++j)
+              for (int i = -P.g[0]; i < P.shape.n[0] + P.g[0]; ++i)
+                visit(static_cast<std::size_t>(P.at(i, j, k)), P.shape.point(i, j, k));
+        });
       }
       geometry.push_back(std::move(g));
     }
   std::vector<std::size_t> cells, ghosted;
-  for (const PartGeometry& g : geometry) cells.push_back(g.shape.cells()), ghosted.push_back(g.frames().f.size());
+  for (const PartGeometry& g : geometry) cells.push_back(g.shape.cells()), ghosted.push_back(g.frames().points);
   share = CellShare(cells, comm);
   ghosted_share = CellShare(ghosted, comm);
 }

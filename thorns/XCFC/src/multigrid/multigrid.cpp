@@ -32,16 +32,12 @@ Multigrid::Impl::Impl(const GridShape& shape, MPI_Comm c, MultigridStorage stora
   levels.emplace_back(shape);
   {
     const Level& L = levels[0];
-    frames.J.assign(L.ghosted_size, Matrix3{});
-    frames.f.assign(L.ghosted_size, Point3{1, 1, 1});
-    for (int k = -L.g[2]; k < shape.n[2] + L.g[2]; ++k)
-      for (int j = -L.g[1]; j < shape.n[1] + L.g[1]; ++j)
-        for (int i = -L.g[0]; i < shape.n[0] + L.g[0]; ++i) {
-          const Point3 x = shape.point(i, j, k);
-          const auto p = static_cast<std::size_t>(L.at(i, j, k));
-          frames.J[p] = coords::jacobian(shape.coordinates, x);
-          frames.f[p] = coords::metric_diagonal(shape.coordinates, x);
-        }
+    frames = CellFrames::of(shape.coordinates, L.ghosted_size, [&](auto&& visit) {
+      for (int k = -L.g[2]; k < shape.n[2] + L.g[2]; ++k)
+        for (int j = -L.g[1]; j < shape.n[1] + L.g[1]; ++j)
+          for (int i = -L.g[0]; i < shape.n[0] + L.g[0]; ++i)
+            visit(static_cast<std::size_t>(L.at(i, j, k)), shape.point(i, j, k));
+    });
   }
   for (;;) {
     const GridShape& s = levels.back().shape;

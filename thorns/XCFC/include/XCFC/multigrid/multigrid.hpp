@@ -66,9 +66,33 @@ struct SolveStats {
 // Geometry of the finest level's cells in the ghosted layout (ghosted_index), computed once per
 // grid: the Jacobian J[A][i] = dX^A / dx^i and the reference-metric diagonal f_ii at each cell's
 // evaluation point. The vector transformations would otherwise call sin/cos per cell and solve.
+// Cartesian grids have the same frame at every point: one entry each (issue 21, memory: 96 bytes
+// per ghosted point otherwise).
 struct CellFrames {
-  std::vector<Matrix3> J;
+  std::vector<Matrix3> J;  // per ghosted point, or one for all
   std::vector<Point3> f;
+  std::size_t points = 0;  // ghosted points
+  const Matrix3& jacobian(std::size_t p) const { return J[J.size() == 1 ? 0 : p]; }
+  const Point3& diagonal(std::size_t p) const { return f[f.size() == 1 ? 0 : p]; }
+  // Frames at the `points` ghosted points of a grid in coordinates `c`: for_each_point(visit) calls
+  // visit(p, x) with each point's index and coordinates (only the first counts on a Cartesian grid).
+  template <class At>
+  static CellFrames of(CoordinateSystem c, std::size_t points, At&& for_each_point) {
+    CellFrames fr;
+    fr.points = points;
+    const bool constant = c == CoordinateSystem::cartesian;
+    fr.J.assign(constant ? 1 : points, Matrix3{});
+    fr.f.assign(constant ? 1 : points, Point3{1, 1, 1});
+    bool done = false;
+    for_each_point([&](std::size_t p, const Point3& x) {
+      if (done) return;
+      const std::size_t at = constant ? 0 : p;
+      fr.J[at] = coords::jacobian(c, x);
+      fr.f[at] = coords::metric_diagonal(c, x);
+      done = constant;
+    });
+    return fr;
+  }
 };
 
 // Where the levels' arrays live on several ranks: replicated (every rank holds every level whole,
