@@ -59,4 +59,13 @@ inline std::unique_ptr<Block> kernel_block(const VariableRegistry& vars, int n,
                                  std::array<int, 3>{3, 3, 3}, std::array<double, 3>{0.0, 0.0, 0.0}, dx, vars);
 }
 
+// Every point (ghosts included) of component c of `group` from value(), in storage order: the
+// kernel tests fill blocks with random states this way.
+template <class Value>
+void fill_component(Block& b, int group, int c, Value value) {
+  const std::size_t np = b.points_per_component(group);
+  double* p = b.data(group) + static_cast<std::size_t>(c) * np;
+  for (std::size_t i = 0; i < np; ++i) p[i] = value();
+}
+
 }  // namespace remnant::grmhd::test

@@ -20,11 +20,7 @@ using namespace remnant::grmhd;
 void fill(Block& b, const Groups& g, int bvec, bool shift, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
-  auto component = [&](int group, int c, auto value) {
-    const std::size_t np = b.points_per_component(group);
-    double* p = b.data(group) + static_cast<std::size_t>(c) * np;
-    for (std::size_t i = 0; i < np; ++i) p[i] = value();
-  };
+  auto component = [&](int group, int c, auto value) { test::fill_component(b, group, c, value); };
   for (int c = 0; c < Prim::ncomp; ++c) component(g.prim, c, [&] { return 0.1 + u(rng); });
   for (int c : {int{Prim::idx::vel}, int{Prim::idx::vel2}, int{Prim::idx::vel3}}) component(g.prim, c, [&] { return 0.6 * (u(rng) - 0.5); });
   component(g.prim, Prim::idx::W, [&] { return 1.0 + 0.3 * u(rng); });

@@ -47,6 +47,22 @@ GridConfig spherical_box(int dim) {
 
 double linear(const Point3& x) { return 1.0 + 0.5 * x[0] - 0.3 * x[1] + 0.2 * x[2]; }
 
+// The leaves with the level-0 blocks at index[0] == 1, index[1] <= 1 (a 2D patch) replaced by their
+// four children; `parents` counts the blocks refined.
+std::vector<BlockKey> leaves_with_refined_patch(const AmrGrid& grid, int* parents = nullptr) {
+  std::vector<BlockKey> leaves;
+  for (const BlockKey& k : grid.all_blocks()) {
+    if (k.index[0] == 1 && k.index[1] <= 1) {
+      if (parents) ++*parents;
+      for (int c1 = 0; c1 < 2; ++c1)
+        for (int c0 = 0; c0 < 2; ++c0) leaves.push_back({1, {2 * k.index[0] + c0, 2 * k.index[1] + c1, 0}});
+    } else {
+      leaves.push_back(k);
+    }
+  }
+  return leaves;
+}
+
 void fill(AmrGrid& grid, int g, double (*f)(const Point3&)) {
   for (Block* b : grid.local_blocks())
     for (int k = -b->ng[2]; k < b->n[2] + b->ng[2]; ++k)
@@ -143,15 +159,7 @@ TEST(Amr, RegridConservesAndRestrictionUndoesProlongation) {
   std::vector<double> original;
   for (Block* b : grid.local_blocks()) for_interior(*b, [&](int i, int j, int k) { original.push_back(b->field(u, 0)(i, j, k)); });
   // Refine a patch of blocks (with what balance requires), then everything back.
-  std::vector<BlockKey> refined;
-  for (const BlockKey& k : grid.all_blocks()) {
-    if (k.index[0] == 1 && k.index[1] <= 1) {
-      for (int c1 = 0; c1 < 2; ++c1)
-        for (int c0 = 0; c0 < 2; ++c0) refined.push_back({1, {2 * k.index[0] + c0, 2 * k.index[1] + c1, 0}});
-    } else {
-      refined.push_back(k);
-    }
-  }
+  const std::vector<BlockKey> refined = leaves_with_refined_patch(grid);
   const auto base = grid.all_blocks();
   ASSERT_TRUE(grid.set_leaves(refined));
   EXPECT_EQ(grid.finest_level(), 1);
@@ -194,17 +202,8 @@ TEST(Amr, GroupsWithFewerGhostsRegrid) {
           b->field(g, 0)(i, j, 0) = inside ? f(b->centroid(0, i), b->centroid(1, j)) : first_layer ? 0.0 : std::nan("");
         }
     }
-  std::vector<BlockKey> refined;
   int parents = 0;
-  for (const BlockKey& k : grid.all_blocks()) {
-    if (k.index[0] == 1 && k.index[1] <= 1) {
-      ++parents;
-      for (int c1 = 0; c1 < 2; ++c1)
-        for (int c0 = 0; c0 < 2; ++c0) refined.push_back({1, {2 * k.index[0] + c0, 2 * k.index[1] + c1, 0}});
-    } else {
-      refined.push_back(k);
-    }
-  }
+  const std::vector<BlockKey> refined = leaves_with_refined_patch(grid, &parents);
   const auto base = grid.all_blocks();
   ASSERT_TRUE(grid.set_leaves(refined));
   int children = 0;
@@ -240,15 +239,7 @@ TEST(Amr, RegridMovesTheBlocksItKeeps) {
   fill(grid, u, [](const Point3& x) { return 1 + x[0] * std::cos(3 * x[1]); });
   std::map<std::pair<int, BlockIndex>, const Block*> before;
   for (Block* b : grid.local_blocks()) before[{b->level, b->index}] = b;
-  std::vector<BlockKey> refined;
-  for (const BlockKey& k : grid.all_blocks()) {
-    if (k.index[0] == 1 && k.index[1] <= 1) {
-      for (int c1 = 0; c1 < 2; ++c1)
-        for (int c0 = 0; c0 < 2; ++c0) refined.push_back({1, {2 * k.index[0] + c0, 2 * k.index[1] + c1, 0}});
-    } else {
-      refined.push_back(k);
-    }
-  }
+  const std::vector<BlockKey> refined = leaves_with_refined_patch(grid);
   ASSERT_TRUE(grid.set_leaves(refined));
   int kept = 0, fresh = 0;
   for (std::size_t i = 0; i < grid.local_blocks().size(); ++i) {
