@@ -55,9 +55,15 @@ struct Candidate {
   Conserved cons;  // prim_to_cons(prim) where the residual was computed (has_cons)
   std::uint32_t rules = 0;
   bool atmosphere = false, finite = true, has_cons = false;
+  signed char acausal = -1;  // the table's acausal flag at prim, known from the final EOS call (-1: not known)
   double residual = INFINITY;
   bool clean() const { return !atmosphere && finite && !(rules & kRulesMovingState); }
 };
+
+template <class E>
+bool acausal_at(const E& eos, const Candidate& c) {
+  return c.acausal >= 0 ? c.acausal != 0 : acausal_at(eos, c.prim);
+}
 
 // (v) velocity, atmosphere check, error policy; (vi) the final EOS call; the residual against `input`.
 template <class E>
@@ -84,6 +90,7 @@ Candidate complete(const E& eos, const Settings& s, const atmosphere::Atmosphere
       const eos::PressCs2 pc = eos.press_cs2(prim.rho, sol.lnT, prim.ye);
       prim.press = pc.press;
       prim.cs2 = pc.cs2;
+      c.acausal = pc.acausal;
     } else {
       const eos::Thermo th = eos.thermo(prim.rho, prim.T, prim.ye);
       prim.press = th.press;
@@ -191,8 +198,8 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   // beside the physical one (LS220 above ~5e15 g/cm^3), so a clean root is looked for first.
   const bool wrong = best.finite && !best.atmosphere && best.residual > s.accuracy &&
                      (!(best.rules & detail::kRulesMovingState & ~(kRuleEpsBelowLow | kRuleEpsAboveHigh)) ||
-                      detail::acausal_at(eos, best.prim));
-  if (rep.status == Status::ok && (wrong || (best.clean() && detail::acausal_at(eos, best.prim)))) {
+                      detail::acausal_at(eos, best));
+  if (rep.status == Status::ok && (wrong || (best.clean() && detail::acausal_at(eos, best)))) {
     int good = best.clean() && best.residual <= s.accuracy;
     // Two states reproducing the conserved variables settle the outcome (ambiguous, the first one
     // kept): the scan stops there (issue 21: LS220's ambiguous states stopped scanning half way).
@@ -226,7 +233,7 @@ Report recover(const E& eos, const Settings& s, const atmosphere::Atmosphere& at
   if (best.atmosphere) return to_atmosphere(Status::atmosphere);
   if (!best.finite) return to_atmosphere(Status::non_finite);
   if (rep.status == Status::ok && best.residual > s.accuracy &&
-      (!(best.rules & detail::kRulesMovingState) || detail::acausal_at(eos, best.prim)))
+      (!(best.rules & detail::kRulesMovingState) || detail::acausal_at(eos, best)))
     rep.status = Status::inaccurate;
   return finish(best.has_cons ? &best.cons : nullptr);
 }

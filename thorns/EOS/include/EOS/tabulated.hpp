@@ -62,8 +62,11 @@ class Tabulated {
     locate(t_->ye, ye, iy, fy);
     const double* p = t_->thermo.data() + ((iy * t_->lT.n + it) * t_->lrho.n + ir) * kThermoStride;
     counter_.add();
+    // acausal(rho, ye) from the indices found here: the recovery asks for it at this point, and
+    // its own locate would take ln rho once more.
+    const bool acausal = !t_->acausal_cell.empty() && t_->acausal_cell[iy * t_->lrho.n + ir] != 0;
     return {std::exp(trilinear(p + kLogP, sr_, st_, sy_, fr, ft, fy)) - t_->p_shift,
-            trilinear(p + kCs2, sr_, st_, sy_, fr, ft, fy)};
+            trilinear(p + kCs2, sr_, st_, sy_, fr, ft, fy), acausal};
   }
   double press(double rho, double T, double ye) const {
     counter_.add();

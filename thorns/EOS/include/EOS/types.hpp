@@ -13,6 +13,7 @@ struct Thermo {
 };
 struct PressCs2 {
   double press = 0, cs2 = 0;
+  bool acausal = false;  // Tabulated::acausal(rho, ye) of the same point, from the same indices
 };
 
 // Chemical potentials in MeV, each including its particle's rest mass relative to m_n
