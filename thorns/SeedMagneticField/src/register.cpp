@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -92,7 +93,10 @@ double max_magnetisation(Context& ctx, double rho_floor) {
 
 // SeedMagneticField::balance = hydrostatic: the TOV star's fluid perturbed so that it balances the
 // poloidal field's Lorentz force (hydrostatic_balance.hpp); the faces stay as seeded.
-void balance_star(Context& ctx, const PoloidalLaw& pol) {
+// SeedMagneticField_Balance (scheduled after SeedMagneticField_Initial when balance = hydrostatic):
+// the seeded law (A_b, p_cut) comes from the service that SeedMagneticField_Initial published.
+void balance_star(Context& ctx) {
+  const PoloidalLaw& pol = ctx.service<PoloidalLaw>("SeedMagneticField::poloidal_law");
   const auto slice = tov::polytrope_slice(ctx.param<double>("TOV", "poly_K"), ctx.param<double>("TOV", "poly_gamma"),
                                           ctx.param<double>("TOV", "ye"));
   const tov::TovStar star(*slice, ctx.param<double>("TOV", "rho_central"),
@@ -152,7 +156,7 @@ void initial(Context& ctx) {
                   "A_b = %.6e (B_max = %.4e G)",
                   pol.n_s, p_max, pol.p_cut, pol.A_b, ctx.param<double>("SeedMagneticField", "B_max_gauss"));
     ctx.info(line);
-    if (ctx.param<std::string>("SeedMagneticField", "balance") == "hydrostatic") balance_star(ctx, pol);
+    ctx.publish("SeedMagneticField::poloidal_law", std::make_shared<PoloidalLaw>(pol));
   }
   if (toroidal) {
     if (axisymmetric_2d) {
@@ -213,4 +217,5 @@ void initial(Context& ctx) {
 REMNANT_REGISTER_THORN(SeedMagneticField) {
   reg.function("SeedMagneticField_CheckParameters", remnant::seed::check_parameters);
   reg.function("SeedMagneticField_Initial", remnant::seed::initial);
+  reg.function("SeedMagneticField_Balance", remnant::seed::balance_star);
 }
