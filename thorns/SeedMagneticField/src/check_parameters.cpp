@@ -1,5 +1,6 @@
 #include "check_parameters.hpp"
 
+#include <algorithm>
 #include <vector>
 
 namespace remnant::seed {
@@ -40,6 +41,34 @@ void check_symmetry(Context& ctx, const std::string& type, const std::string& co
   }
 }
 
+// balance = hydrostatic perturbs the static TOV star against a poloidal field's force, with the
+// ideal gas relation e = rho + p / (Gamma - 1) (hydrostatic_balance.hpp).
+void check_balance(Context& ctx, const std::string& type) {
+  const Parameters& p = ctx.params();
+  if (ctx.param<std::string>("SeedMagneticField", "balance") != "hydrostatic") return;
+  const auto where = [&](const char* thorn, const char* name) {
+    return p.user_origin({{"SeedMagneticField", "balance"}, {thorn, name}});
+  };
+  if (type != "poloidal")
+    throw InputError(where("SeedMagneticField", "type"),
+                     "SeedMagneticField::balance = hydrostatic balances a poloidal field's Lorentz force only, but "
+                     "SeedMagneticField::type = " + type + "; use type: poloidal or balance: none");
+  const auto& active = ctx.active_thorns();
+  if (std::find(active.begin(), active.end(), "TOV") == active.end())
+    throw InputError(p.user_origin({{"SeedMagneticField", "balance"}}),
+                     "SeedMagneticField::balance = hydrostatic needs the static spherical star of the TOV thorn "
+                     "(TOV is not in active_thorns); use balance: none for other initial data");
+  if (ctx.param<std::string>("TOV", "eos_slice") != "polytrope")
+    throw InputError(where("TOV", "eos_slice"),
+                     "SeedMagneticField::balance = hydrostatic needs TOV::eos_slice = polytrope (got " +
+                         ctx.param<std::string>("TOV", "eos_slice") + ")");
+  const std::string eos = p.find("EOS", "type") ? ctx.param<std::string>("EOS", "type") : "none";
+  if (eos != "ideal_gas")
+    throw InputError(where("EOS", "type"),
+                     "SeedMagneticField::balance = hydrostatic sets rho and eps from p and e + p with the ideal gas "
+                     "law and needs EOS::type = ideal_gas (got " + eos + ")");
+}
+
 }  // namespace
 
 void check_parameters(Context& ctx) {
@@ -52,6 +81,7 @@ void check_parameters(Context& ctx) {
                          "SeedMagneticField from active_thorns");
   const std::string type = ctx.param<std::string>("SeedMagneticField", "type");
   const bool poloidal = type != "toroidal";
+  check_balance(ctx, type);
   const double fraction = ctx.param<double>("SeedMagneticField", "p_cut_fraction");
   if (poloidal && !(fraction < 1.0))
     throw InputError(p.user_origin({{"SeedMagneticField", "p_cut_fraction"}}),

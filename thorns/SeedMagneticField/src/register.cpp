@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "HydroBase/magnetic_units.hpp"
 #include "HydroBase/vector_potential.hpp"
 #include "check_parameters.hpp"
+#include "hydrostatic_balance.hpp"
 #include "seed_field.hpp"
 #include "toroidal_potential.hpp"
 #include "remnant/cell_geometry.hpp"
@@ -20,6 +22,8 @@
 #include "remnant/registrar.hpp"
 #include "remnant/vars/HydroBase.hpp"
 #include "remnant/vars/Spacetime.hpp"
+#include "TOV/cold_slice.hpp"
+#include "TOV/tov_solver.hpp"
 
 namespace remnant::seed {
 namespace {
@@ -87,6 +91,34 @@ double max_magnetisation(Context& ctx, double rho_floor) {
   return global_max(ctx, local);
 }
 
+// SeedMagneticField::balance = hydrostatic: the TOV star's fluid perturbed so that it balances the
+// poloidal field's Lorentz force (hydrostatic_balance.hpp); the faces stay as seeded.
+// SeedMagneticField_Balance (scheduled after SeedMagneticField_Initial when balance = hydrostatic):
+// the seeded law (A_b, p_cut) comes from the service that SeedMagneticField_Initial published.
+void balance_star(Context& ctx) {
+  const PoloidalLaw& pol = ctx.service<PoloidalLaw>("SeedMagneticField::poloidal_law");
+  const auto slice = tov::polytrope_slice(ctx.param<double>("TOV", "poly_K"), ctx.param<double>("TOV", "poly_gamma"),
+                                          ctx.param<double>("TOV", "ye"));
+  const tov::TovStar star(*slice, ctx.param<double>("TOV", "rho_central"),
+                          static_cast<int>(ctx.param<std::int64_t>("TOV", "samples")));
+  const HydrostaticBalance balance(star, pol);
+  const double gamma = ctx.param<double>("EOS", "gamma");
+  BalanceChange local;
+  for (Block* b : ctx.grid().local_blocks()) {
+    const Prim prim(ctx, *b);
+    const BalanceChange c = apply_balance(*b, balance, prim.field(Prim::idx::rho), prim.field(Prim::idx::eps),
+                                          prim.field(Prim::idx::press), gamma);
+    local.max_dp_over_p = std::max(local.max_dp_over_p, c.max_dp_over_p);
+    local.max_drho_over_rho = std::max(local.max_drho_over_rho, c.max_drho_over_rho);
+  }
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "SeedMagneticField: hydrostatic balance of the poloidal field inside r = %.5f: max |dp/p| = %.3e, "
+                "max |drho/rho| = %.3e",
+                balance.field_radius(), global_max(ctx, local.max_dp_over_p), global_max(ctx, local.max_drho_over_rho));
+  ctx.info(line);
+}
+
 void initial(Context& ctx) {
   GridDriver& grid = ctx.grid();
   const FaceGroups groups(ctx);
@@ -124,6 +156,7 @@ void initial(Context& ctx) {
                   "A_b = %.6e (B_max = %.4e G)",
                   pol.n_s, p_max, pol.p_cut, pol.A_b, ctx.param<double>("SeedMagneticField", "B_max_gauss"));
     ctx.info(line);
+    ctx.publish("SeedMagneticField::poloidal_law", std::make_shared<PoloidalLaw>(pol));
   }
   if (toroidal) {
     if (axisymmetric_2d) {
@@ -184,4 +217,5 @@ void initial(Context& ctx) {
 REMNANT_REGISTER_THORN(SeedMagneticField) {
   reg.function("SeedMagneticField_CheckParameters", remnant::seed::check_parameters);
   reg.function("SeedMagneticField_Initial", remnant::seed::initial);
+  reg.function("SeedMagneticField_Balance", remnant::seed::balance_star);
 }
