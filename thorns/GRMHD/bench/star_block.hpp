@@ -108,8 +108,11 @@ class StarBlock {
     mhd_emfs();
   }
   // The two parts of fluxes() with the field (BM_PartMHD).
-  void mhd_sweeps() { compute_block_fluxes_mhd(eos_, rhs_settings_, g_, mg_, *block_, EmfScheme::uct_hll); }
-  void mhd_emfs() { edge_emfs(EmfScheme::uct_hll, mg_, *block_); }
+  // The face data of the EMFs: per-block scratch, as GRMHD_RHS_MHD keeps them (ct_faces.hpp).
+  void mhd_sweeps() {
+    compute_block_fluxes_mhd(eos_, rhs_settings_, g_, mg_, ct_.bind(*block_, g_), *block_, EmfScheme::uct_hll);
+  }
+  void mhd_emfs() { edge_emfs(EmfScheme::uct_hll, mg_, ct_.bind(*block_, g_), *block_); }
   void divergence() {
     if (!magnetic_) return compute_block_rhs(g_, *block_);
     face_rhs(mg_, *block_);
@@ -219,6 +222,7 @@ class StarBlock {
   VariableRegistry vars_;
   Groups g_;
   MhdGroups mg_;
+  CtFaceStorage ct_;
   bool magnetic_ = false;
   std::array<std::vector<double>, 3> b0_;
   hydrobase::MatterGroups matter_;

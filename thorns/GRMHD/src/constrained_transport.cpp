@@ -189,7 +189,7 @@ template <int C>
   const double* __restrict fa = a == 0 ? ffa : ffa + id[a];
   const double* __restrict fb = bb == 0 ? ffb : ffb + id[bb];
   const double* __restrict fc = C == 0 ? vwc : vwc + id[C];
-  // ivdep: out (an EMF group) is only written, the face data only read.
+  // ivdep: out (an EMF group) is only written, the face data (scratch) only read.
 #pragma GCC ivdep
   for (int i = 0; i < len; ++i) {
     const double emf = -upwind_part_select(ra, i, sb, qb, slb, sqb) + upwind_part_select(rb, i, sa, qa, sla, sqa);
@@ -222,12 +222,13 @@ auto* uct_hll_row_function() {
 
 }  // namespace
 
-void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b, Reconstruction edge_reconstruction) {
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, const CtFaces& ct, Block& b, Reconstruction edge_reconstruction) {
   if (scheme == EmfScheme::uct_contact) throw std::logic_error("edge_emfs: uct_contact needs the hydro groups");
-  edge_emfs(scheme, g, Groups{}, b, edge_reconstruction);
+  edge_emfs(scheme, g, Groups{}, ct, b, edge_reconstruction);
 }
 
-void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block& b, Reconstruction edge_reconstruction) {
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, const CtFaces& ct, Block& b,
+               Reconstruction edge_reconstruction) {
   const int w = ghosts_needed(edge_reconstruction);
   std::optional<ContactEmfFields> contact;
   if (scheme == EmfScheme::uct_contact) contact.emplace(g, hydro, b);
@@ -239,9 +240,9 @@ void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block&
     const Strided e{b.field(g.emf[c], 0)};
     Strided cta[kNumCt], ctb[kNumCt];
     if (used[a])
-      for (int q = 0; q < kNumCt; ++q) cta[q] = {b.field(g.ct[a], q)};
+      for (int q = 0; q < kNumCt; ++q) cta[q] = {ct.f[a][q]};
     if (used[bb])
-      for (int q = 0; q < kNumCt; ++q) ctb[q] = {b.field(g.ct[bb], q)};
+      for (int q = 0; q < kNumCt; ++q) ctb[q] = {ct.f[bb][q]};
     const Strided Ba{b.field(g.bface[a], 0)}, Bb{b.field(g.bface[bb], 0)};
     const double* ffa = b.face_factors(a);
     const double* ffb = b.face_factors(bb);

@@ -10,6 +10,7 @@
 // zero on the axis and at the origin. Then d/dt (area * Bface_a) = -(circulation of E around the
 // face), so the discrete divergence of every cell stays what it was to round-off.
 #include "GRMHD/reconstruction.hpp"
+#include "ct_faces.hpp"
 #include "groups.hpp"
 #include "mhd_groups.hpp"
 #include "remnant/grid.hpp"
@@ -17,7 +18,8 @@
 namespace remnant::grmhd {
 
 // The EMFs on the edges of the interior (block edges included) of the used directions' edges.
-// Reads ct_x/y/z (interior faces plus one transverse ghost layer) and Bface1..3 (two ghost layers;
+// Reads the face data `ct` (ct_faces.hpp: interior faces plus one transverse ghost layer; uct_contact
+// only the induction fluxes kFluxNext, kFluxPrev) and Bface1..3 (two ghost layers;
 // three with edge_reconstruction = ppm).
 //   uct_hll:    Del Zanna et al. 2007 (A&A 473, 11), eq. 44 form of the upwind CT of Londrillo &
 //               Del Zanna 2004: E_c = -HLL_a(vt^a B^b) + HLL_b(vt^b B^a), with B^b, B^a reconstructed
@@ -28,10 +30,11 @@ namespace remnant::grmhd {
 //   uct_contact: Gardiner & Stone 2005 (emf_contact.hpp): the mean of the four face EMFs plus the
 //               face-to-cell gradients of E upwinded by the faces' mass fluxes; needs the hydro
 //               groups (prim, metric, flux_x/y/z of the same call).
-void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, Block& b,
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, const Groups& hydro, const CtFaces& ct, Block& b,
                Reconstruction edge_reconstruction = Reconstruction::mc);
 // The same for uct_hll and arithmetic (which need no hydro groups).
-void edge_emfs(EmfScheme scheme, const MhdGroups& g, Block& b, Reconstruction edge_reconstruction = Reconstruction::mc);
+void edge_emfs(EmfScheme scheme, const MhdGroups& g, const CtFaces& ct, Block& b,
+               Reconstruction edge_reconstruction = Reconstruction::mc);
 
 // Bface_rhs of the interior faces (block faces included) from the EMFs; zero on faces of zero area.
 void face_rhs(const MhdGroups& g, Block& b);

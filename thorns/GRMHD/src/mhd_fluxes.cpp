@@ -3,7 +3,7 @@
 // orthonormal components in curvilinear coordinates) are reconstructed with the fluid variables; the normal B^d at a face is the face field itself
 // (continuous there, never reconstructed): Bface_d / psi^6. The HLL solve of the nine-component
 // state (valencia_mhd.hpp) gives the hydro fluxes (flux_x/y/z, as for hydro) and the face data the
-// edge EMFs need (ct_x/y/z, see mhd_groups.hpp). The lines cover one ghost layer in the used
+// edge EMFs need (CtFaces, see ct_faces.hpp). The lines cover one ghost layer in the used
 // transverse directions, so that every edge of the interior (block edges included) has both
 // neighbouring faces of each direction.
 #include "mhd_fluxes.hpp"
@@ -64,13 +64,14 @@ std::array<double, 3> momentum_flux_weights(const Block& b, int d, const int* id
 
 // always_inline: into the portable and the AVX2 wrappers of block_fluxes_mhd, each flattened whole.
 template <int D, class E>
-[[gnu::always_inline]] inline void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
-                         MhdLineScratch& L, const MhdSweepOutputs& outputs) {
+[[gnu::always_inline]] inline void sweep_direction_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg,
+                                                      const CtFaces& ctf, Block& b, MhdLineScratch& L,
+                                                      const MhdSweepOutputs& outputs) {
   const int n = b.n[D], ng = b.ng[D];
   L.ensure(n, ng);
   const SweepFields<D> fields(b, g);
-  Field ct[kNumCt], bvec[3];
-  for (int c = 0; c < kNumCt; ++c) ct[c] = b.field(mg.ct[D], c);
+  const auto& ct = ctf.f[D];
+  Field bvec[3];
   for (int c = 0; c < 3; ++c) bvec[c] = b.field(mg.bvec, c);
   const Field bn = b.field(mg.bface[D], 0);
   // The transverse directions in cyclic order: the induction fluxes of B^{next}, B^{prev}.
@@ -138,7 +139,7 @@ template <int D, class E>
           L.work[kWorkInvNext][f] = h[next] != 0 ? 1.0 / h[next] : 0.0;
           L.work[kWorkInvPrev][f] = h[prev] != 0 ? 1.0 / h[prev] : 0.0;
         }
-      // Straight into the flux and ct groups (strided across x).
+      // Straight into the flux groups and the face data (strided across x).
       const auto face_out = line_face_output<D, kNumFluxMhd>(out, fbase, fields.flux_stride);
       if (speeds_only) mhd_face_speeds<D>(eos, n, L, face_out);
       else if (outputs.induction_fluxes) mhd_face_fluxes<D, true>(eos, n, flux_weight, L, face_out);
@@ -148,34 +149,34 @@ template <int D, class E>
 
 template <class E>
 [[gnu::always_inline]] inline void block_fluxes_mhd_body(const E& eos, const RhsSettings& s, const Groups& g,
-                                                         const MhdGroups& mg, Block& b, const MhdSweepOutputs& outputs,
-                                                         MhdLineScratch& scratch) {
-  if (direction_used(b, 0)) sweep_direction_mhd<0>(eos, s, g, mg, b, scratch, outputs);
-  if (direction_used(b, 1)) sweep_direction_mhd<1>(eos, s, g, mg, b, scratch, outputs);
-  if (direction_used(b, 2)) sweep_direction_mhd<2>(eos, s, g, mg, b, scratch, outputs);
+                                                         const MhdGroups& mg, const CtFaces& ct, Block& b,
+                                                         const MhdSweepOutputs& outputs, MhdLineScratch& scratch) {
+  if (direction_used(b, 0)) sweep_direction_mhd<0>(eos, s, g, mg, ct, b, scratch, outputs);
+  if (direction_used(b, 1)) sweep_direction_mhd<1>(eos, s, g, mg, ct, b, scratch, outputs);
+  if (direction_used(b, 2)) sweep_direction_mhd<2>(eos, s, g, mg, ct, b, scratch, outputs);
 }
 template <class E>
 [[gnu::flatten]] void block_fluxes_mhd_portable(const E& eos, const RhsSettings& s, const Groups& g,
-                                                const MhdGroups& mg, Block& b, const MhdSweepOutputs& outputs,
-                                                MhdLineScratch& scratch) {
-  block_fluxes_mhd_body(eos, s, g, mg, b, outputs, scratch);
+                                                const MhdGroups& mg, const CtFaces& ct, Block& b,
+                                                const MhdSweepOutputs& outputs, MhdLineScratch& scratch) {
+  block_fluxes_mhd_body(eos, s, g, mg, ct, b, outputs, scratch);
 }
 #if REMNANT_HAVE_AVX2_KERNELS
 template <class E>
 REMNANT_AVX2_KERNEL void block_fluxes_mhd_avx2(const E& eos, const RhsSettings& s, const Groups& g,
-                                               const MhdGroups& mg, Block& b, const MhdSweepOutputs& outputs,
-                                               MhdLineScratch& scratch) {
-  block_fluxes_mhd_body(eos, s, g, mg, b, outputs, scratch);
+                                               const MhdGroups& mg, const CtFaces& ct, Block& b,
+                                               const MhdSweepOutputs& outputs, MhdLineScratch& scratch) {
+  block_fluxes_mhd_body(eos, s, g, mg, ct, b, outputs, scratch);
 }
 #endif
 template <class E>
-void block_fluxes_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, Block& b,
-                      const MhdSweepOutputs& outputs) {
+void block_fluxes_mhd(const E& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg, const CtFaces& ct,
+                      Block& b, const MhdSweepOutputs& outputs) {
   thread_local MhdLineScratch scratch;
 #if REMNANT_HAVE_AVX2_KERNELS
-  if (avx2_kernels()) return block_fluxes_mhd_avx2(eos, s, g, mg, b, outputs, scratch);
+  if (avx2_kernels()) return block_fluxes_mhd_avx2(eos, s, g, mg, ct, b, outputs, scratch);
 #endif
-  block_fluxes_mhd_portable(eos, s, g, mg, b, outputs, scratch);
+  block_fluxes_mhd_portable(eos, s, g, mg, ct, b, outputs, scratch);
 }
 
 }  // namespace
@@ -189,19 +190,10 @@ MhdSweepOutputs MhdSweepOutputs::for_emfs(EmfScheme emfs, const Block& b) {
   return o;
 }
 
-void zero_skipped_induction_fluxes(const MhdSweepOutputs& outputs, const MhdGroups& mg, Block& b) {
-  if (outputs.induction_fluxes) return;
-  for (int d = 0; d < 3; ++d) {
-    const std::size_t points = b.points_per_component(mg.ct[d]);
-    double* data = b.data(mg.ct[d]);
-    std::fill(data + kFluxNext * points, data + (kFluxPrev + 1) * points, 0.0);
-  }
-}
-
 void compute_block_fluxes_mhd(const eos::EOS& eos, const RhsSettings& s, const Groups& g, const MhdGroups& mg,
-                              Block& b, EmfScheme emfs) {
+                              const CtFaces& ct, Block& b, EmfScheme emfs) {
   const MhdSweepOutputs outputs = MhdSweepOutputs::for_emfs(emfs, b);
-  eos.visit([&](const auto& e) { block_fluxes_mhd(e, s, g, mg, b, outputs); });
+  eos.visit([&](const auto& e) { block_fluxes_mhd(e, s, g, mg, ct, b, outputs); });
 }
 
 }  // namespace remnant::grmhd

@@ -1,14 +1,14 @@
 #pragma once
 // The groups of the magnetic-field evolution (HydroBase::magnetic_field = evolved), resolved once
-// per scheduled call: HydroBase's face fields and cell-centred field, GRMHD's face data of the
-// Riemann problems (what the edge EMFs need) and the edge EMFs.
+// per scheduled call: HydroBase's face fields and cell-centred field and GRMHD's edge EMFs (the
+// face data of the Riemann problems that the EMFs need are per-block scratch: ct_faces.hpp).
 #include <array>
 
 #include "remnant/context.hpp"
 
 namespace remnant::grmhd {
 
-// Components of the face groups ct_x, ct_y, ct_z at a face normal to a: the HLL speed bounds
+// Components of the face data of the EMFs (CtFaces) at a face normal to a: the HLL speed bounds
 // alpha^+ = max(0, lambda^+_L, lambda^+_R) and alpha^- = -min(0, lambda^-_L, lambda^-_R), the
 // transport velocity alpha v^a - beta^a of the left and right states, and the HLL fluxes psi^6 F^a
 // of B^b and B^c, (a, b, c) cyclic.
@@ -18,7 +18,7 @@ inline constexpr int kNumCt = 6;
 enum class EmfScheme { uct_hll, arithmetic, uct_contact };
 
 struct MhdGroups {
-  std::array<int, 3> bface{-1, -1, -1}, bface_rhs{-1, -1, -1}, ct{-1, -1, -1}, emf{-1, -1, -1};
+  std::array<int, 3> bface{-1, -1, -1}, bface_rhs{-1, -1, -1}, emf{-1, -1, -1};
   int bvec = -1;
   static MhdGroups of(const Context& ctx) {
     MhdGroups g;
@@ -27,7 +27,6 @@ struct MhdGroups {
       const char xyz = static_cast<char>('x' + d);
       g.bface[d] = ctx.var("HydroBase::Bface" + n);
       g.bface_rhs[d] = ctx.var("HydroBase::Bface" + n + "_rhs");
-      g.ct[d] = ctx.var(std::string("GRMHD::ct_") + xyz);
       g.emf[d] = ctx.var(std::string("GRMHD::emf_") + xyz);
     }
     g.bvec = ctx.var("HydroBase::Bvec");

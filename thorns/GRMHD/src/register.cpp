@@ -1,5 +1,7 @@
 // GRMHD: binds the scheduled functions of thorn.yaml.
 #include <algorithm>
+#include <span>
+#include <vector>
 #include <type_traits>
 
 #include "EOS/eos.hpp"
@@ -8,6 +10,7 @@
 #include "remnant/context.hpp"
 #include "remnant/registrar.hpp"
 #include "constrained_transport.hpp"
+#include "ct_faces.hpp"
 #include "mass_budget.hpp"
 #include "mhd_fluxes.hpp"
 #include "positivity_limiter.hpp"
@@ -115,25 +118,40 @@ void calc_rhs_mhd(Context& ctx) {
   const EmfScheme scheme = emf == "arithmetic"    ? EmfScheme::arithmetic
                            : emf == "uct_contact" ? EmfScheme::uct_contact
                                                   : EmfScheme::uct_hll;
-  for (Block* b : ctx.grid().local_blocks()) {
-    compute_block_fluxes_mhd(eos, s, g, mg, *b, scheme);
-    zero_skipped_induction_fluxes(MhdSweepOutputs::for_emfs(scheme, *b), mg, *b);
+  const Reconstruction edge_rec = parse_reconstruction(ctx.param<std::string>("GRMHD", "emf_reconstruction"));
+  // The face data of the EMFs (ct_faces.hpp): one block's at a time, reused. uct_hll and arithmetic
+  // read only them and the face fields, not the fluxes that the limiter and the Grid correct below,
+  // so a block's EMFs are computed right after its sweep. uct_contact upwinds with the corrected mass
+  // fluxes: it keeps every block's induction fluxes (its only face data) until then.
+  thread_local CtFaceStorage face_data;
+  thread_local std::vector<CtFaceStorage> induction_fluxes;
+  const bool contact = scheme == EmfScheme::uct_contact;
+  const std::span<Block* const> blocks = ctx.grid().local_blocks();
+  if (contact) induction_fluxes.resize(blocks.size());
+  else std::vector<CtFaceStorage>().swap(induction_fluxes);
+  const auto bind = [&](std::size_t i, Block& b) {
+    CtFaces ct;
+    face_data.bind(b, g, ct, 0, contact ? kFluxNext : kNumCt);
+    if (contact) induction_fluxes[i].bind(b, g, ct, kFluxNext, kNumCt);
+    return ct;
+  };
+  for (std::size_t i = 0; i < blocks.size(); ++i) {
+    const CtFaces ct = bind(i, *blocks[i]);
+    compute_block_fluxes_mhd(eos, s, g, mg, ct, *blocks[i], scheme);
+    if (!contact) edge_emfs(scheme, mg, ct, *blocks[i], edge_rec);
   }
   apply_positivity_limiter(ctx, g);
   std::vector<int> faces;
   for (int d = 0; d < ctx.grid().dimension(); ++d) faces.push_back(g.flux[d]);
   for (int d = ctx.grid().dimension(); d < 3; ++d)
-    for (Block* b : ctx.grid().local_blocks()) {
-      std::fill(b->data(g.flux[d]), b->data(g.flux[d]) + b->size(g.flux[d]), 0.0);
-      std::fill(b->data(mg.ct[d]), b->data(mg.ct[d]) + b->size(mg.ct[d]), 0.0);
-    }
+    for (Block* b : blocks) std::fill(b->data(g.flux[d]), b->data(g.flux[d]) + b->size(g.flux[d]), 0.0);
   ctx.grid().correct_fluxes(faces);
-  const Reconstruction edge_rec = parse_reconstruction(ctx.param<std::string>("GRMHD", "emf_reconstruction"));
-  for (Block* b : ctx.grid().local_blocks()) edge_emfs(scheme, mg, g, *b, edge_rec);
+  if (contact)
+    for (std::size_t i = 0; i < blocks.size(); ++i) edge_emfs(scheme, mg, g, bind(i, *blocks[i]), *blocks[i], edge_rec);
   ctx.grid().correct_edges(mg.emf);
   const DomainCells dom = DomainCells::of(ctx);
   const WellBalancedSources wb = well_balanced_sources(eos, s);
-  for (Block* b : ctx.grid().local_blocks()) {
+  for (Block* b : blocks) {
     face_rhs(mg, *b);
     compute_block_rhs_mhd(g, mg.bvec, *b, wb);
     outflow_rhs_block(g, dom, *b);

@@ -44,7 +44,6 @@ inline MhdGroups mhd_groups(const VariableRegistry& vars) {
     const std::string k = std::to_string(d + 1), xyz(1, static_cast<char>('x' + d));
     g.bface[d] = vars.find("HydroBase::Bface" + k);
     g.bface_rhs[d] = vars.find("HydroBase::Bface" + k + "_rhs");
-    g.ct[d] = vars.find("GRMHD::ct_" + xyz);
     g.emf[d] = vars.find("GRMHD::emf_" + xyz);
   }
   g.bvec = vars.find("HydroBase::Bvec");

@@ -38,10 +38,10 @@ struct EdgeInputs {
   double ap, am, vl, vh;
   double line[6];
 };
-EdgeInputs edge_inputs(Block& blk, int ct_group, int bface_group, int a, int b, const int* id) {
+EdgeInputs edge_inputs(Block& blk, const CtFaces& faces, int bface_group, int a, int b, const int* id) {
   int lo[3] = {id[0], id[1], id[2]};
   --lo[b];
-  auto ct = [&](int q, const int* at) { return blk.field(ct_group, q)(at[0], at[1], at[2]); };
+  auto ct = [&](int q, const int* at) { return faces.f[a][q](at[0], at[1], at[2]); };
   EdgeInputs e;
   e.ap = std::max(ct(kAlphaPlus, lo), ct(kAlphaPlus, id));
   e.am = std::max(ct(kAlphaMinus, lo), ct(kAlphaMinus, id));
@@ -56,8 +56,8 @@ EdgeInputs edge_inputs(Block& blk, int ct_group, int bface_group, int a, int b, 
 }
 
 // -/+ HLL_a(vt^a B^b) of the edge at id with the MC slopes written out.
-double upwind_reference(Block& blk, int ct_group, int bface_group, int a, int b, const int* id) {
-  const EdgeInputs e = edge_inputs(blk, ct_group, bface_group, a, b, id);
+double upwind_reference(Block& blk, const CtFaces& ct, int bface_group, int a, int b, const int* id) {
+  const EdgeInputs e = edge_inputs(blk, ct, bface_group, a, b, id);
   const double* q = e.line + 1;  // offsets -2 .. 1
   const double bl = q[1] + 0.5 * detail::mc_slope(q[1] - q[0], q[2] - q[1]);
   const double bh = q[2] - 0.5 * detail::mc_slope(q[2] - q[1], q[3] - q[2]);
@@ -67,12 +67,12 @@ double upwind_reference(Block& blk, int ct_group, int bface_group, int a, int b,
 // The face-sweep outputs the EMFs read (every CT component) and the face fields, uniform in [-1, 1]
 // from `seed` on every point of the block; the HLL speeds alpha^+- through `speed` (v -> alpha >= 0).
 template <class Speed>
-void fill_random_ct_inputs(Block& blk, const MhdGroups& g, std::uint64_t seed, Speed speed) {
+void fill_random_ct_inputs(Block& blk, const MhdGroups& g, CtFaceStorage& storage, std::uint64_t seed, Speed speed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int d = 0; d < 3; ++d) {
-    const std::size_t np = blk.points_per_component(g.ct[d]);
-    double* ct = blk.data(g.ct[d]);
+    const std::size_t np = storage.size(d) / kNumCt;
+    double* ct = storage.data(d);
     for (int q = 0; q < kNumCt; ++q)
       for (std::size_t i = 0; i < np; ++i) {
         double v = u(rng);
@@ -90,10 +90,12 @@ TEST(CtKernels, CartesianUctHllAndFaceRhsHaveTheBitsOfThePointwiseFormulas) {
   constexpr int n = 6;
   const std::unique_ptr<Block> block = test::kernel_block(vars, n);
   Block& blk = *block;
+  CtFaceStorage storage;
+  const CtFaces ct = storage.bind(blk, test::hydro_groups(vars));
   // Speeds below 0.3 set to zero: edges with a zero HLL width.
-  fill_random_ct_inputs(blk, g, 42, [](double v) { return std::abs(v) < 0.3 ? 0.0 : std::abs(v); });
+  fill_random_ct_inputs(blk, g, storage, 42, [](double v) { return std::abs(v) < 0.3 ? 0.0 : std::abs(v); });
   int zero_width = 0;
-  edge_emfs(EmfScheme::uct_hll, g, blk);
+  edge_emfs(EmfScheme::uct_hll, g, ct, blk);
   face_rhs(g, blk);
   for (int c = 0; c < 3; ++c) {
     const int a = (c + 1) % 3, bb = (c + 2) % 3;
@@ -104,18 +106,18 @@ TEST(CtKernels, CartesianUctHllAndFaceRhsHaveTheBitsOfThePointwiseFormulas) {
     for (id[2] = 0; id[2] < n + (c != 2); ++id[2])
       for (id[1] = 0; id[1] < n + (c != 1); ++id[1])
         for (id[0] = 0; id[0] < n + (c != 0); ++id[0]) {
-          const double emf = -upwind_reference(blk, g.ct[a], g.bface[bb], a, bb, id) +
-                             upwind_reference(blk, g.ct[bb], g.bface[a], bb, a, id);
+          const double emf = -upwind_reference(blk, ct, g.bface[bb], a, bb, id) +
+                             upwind_reference(blk, ct, g.bface[a], bb, a, id);
           const double expect = emf * ffa[id[a]] * ffb[id[bb]] * vwc[id[c]] / blk.dx[c];
           const double got = blk.field(g.emf[c], 0)(id[0], id[1], id[2]);
           EXPECT_TRUE(same_bits(got, expect)) << "E_" << c << " at " << id[0] << " " << id[1] << " " << id[2] << ": "
                                               << got << " vs " << expect;
           int lo[3] = {id[0], id[1], id[2]};
           --lo[a];
-          zero_width += blk.field(g.ct[a], kAlphaPlus)(lo[0], lo[1], lo[2]) == 0.0 &&
-                        blk.field(g.ct[a], kAlphaPlus)(id[0], id[1], id[2]) == 0.0 &&
-                        blk.field(g.ct[a], kAlphaMinus)(lo[0], lo[1], lo[2]) == 0.0 &&
-                        blk.field(g.ct[a], kAlphaMinus)(id[0], id[1], id[2]) == 0.0;
+          zero_width += ct.f[a][kAlphaPlus](lo[0], lo[1], lo[2]) == 0.0 &&
+                        ct.f[a][kAlphaPlus](id[0], id[1], id[2]) == 0.0 &&
+                        ct.f[a][kAlphaMinus](lo[0], lo[1], lo[2]) == 0.0 &&
+                        ct.f[a][kAlphaMinus](id[0], id[1], id[2]) == 0.0;
         }
   }
   EXPECT_GT(zero_width, 0) << "no edge with a zero HLL width";
@@ -143,8 +145,9 @@ TEST(CtKernels, CartesianUctHllAndFaceRhsHaveTheBitsOfThePointwiseFormulas) {
 // reconstruction (after the merge of the fast rows with GRMHD::emf_reconstruction the rows were taken
 // for every reconstruction, so ppm_ep's 3D runs silently used MC edges). Reference: the same
 // upwind formula with the face values reconstructed by `reconstruct` along the edge.
-double upwind_reference_with(Block& blk, int ct_group, int bface_group, int a, int b, const int* id, Reconstruction r) {
-  const EdgeInputs e = edge_inputs(blk, ct_group, bface_group, a, b, id);
+double upwind_reference_with(Block& blk, const CtFaces& ct, int bface_group, int a, int b, const int* id,
+                             Reconstruction r) {
+  const EdgeInputs e = edge_inputs(blk, ct, bface_group, a, b, id);
   double left[1], right[1], scratch[ppm_scratch_size(0)];
   reconstruct(r, e.line + 3, left, right, 0, scratch);
   return hll_product_reference(e.ap, e.am, e.vl, e.vh, left[0], right[0]);
@@ -156,9 +159,11 @@ TEST(CtKernels, CartesianUctHllUsesTheChosenEdgeReconstruction) {
   constexpr int n = 6;
   const std::unique_ptr<Block> block = test::kernel_block(vars, n);
   Block& blk = *block;
-  fill_random_ct_inputs(blk, g, 7, [](double v) { return std::abs(v) + 0.1; });
+  CtFaceStorage storage;
+  const CtFaces ct = storage.bind(blk, test::hydro_groups(vars));
+  fill_random_ct_inputs(blk, g, storage, 7, [](double v) { return std::abs(v) + 0.1; });
   for (Reconstruction r : {Reconstruction::ppm_ep, Reconstruction::ppm, Reconstruction::minmod}) {
-    edge_emfs(EmfScheme::uct_hll, g, blk, r);
+    edge_emfs(EmfScheme::uct_hll, g, ct, blk, r);
     double worst = 0, scale = 0;
     for (int c = 0; c < 3; ++c) {
       const int a = (c + 1) % 3, bb = (c + 2) % 3;
@@ -166,8 +171,8 @@ TEST(CtKernels, CartesianUctHllUsesTheChosenEdgeReconstruction) {
       for (id[2] = 0; id[2] < n + (c != 2); ++id[2])
         for (id[1] = 0; id[1] < n + (c != 1); ++id[1])
           for (id[0] = 0; id[0] < n + (c != 0); ++id[0]) {
-            const double emf = -upwind_reference_with(blk, g.ct[a], g.bface[bb], a, bb, id, r) +
-                               upwind_reference_with(blk, g.ct[bb], g.bface[a], bb, a, id, r);
+            const double emf = -upwind_reference_with(blk, ct, g.bface[bb], a, bb, id, r) +
+                               upwind_reference_with(blk, ct, g.bface[a], bb, a, id, r);
             const double expect = emf * blk.face_factors(a)[id[a]] * blk.face_factors(bb)[id[bb]] *
                                   blk.volume_weights(c)[id[c]] / blk.dx[c];
             worst = std::max(worst, std::abs(blk.field(g.emf[c], 0)(id[0], id[1], id[2]) - expect));

@@ -63,20 +63,24 @@ void fill_random_state(Block& b, const Groups& g, const MhdGroups& mg, std::uint
     for (std::size_t i = 0; i < b.size(mg.bface[d]); ++i) b.data(mg.bface[d])[i] = u(rng) - 0.5;
 }
 
-// The face data of one sweep: flux_x/y/z and ct_x/y/z, NaN before the sweep (what it leaves alone).
+// The face data of one sweep: flux_x/y/z and the EMFs' face data (in `ct`), NaN before the sweep
+// (what it leaves alone).
 struct FaceData {
   std::vector<double> flux[3], ct[3];
 };
-FaceData sweep(Block& b, const Groups& g, const MhdGroups& mg, EmfScheme emfs) {
-  for (int d = 0; d < 3; ++d)
-    for (int group : {g.flux[d], mg.ct[d]})
-      std::fill(b.data(group), b.data(group) + b.size(group), std::numeric_limits<double>::quiet_NaN());
+FaceData sweep(Block& b, const Groups& g, const MhdGroups& mg, CtFaceStorage& ct, EmfScheme emfs) {
+  const CtFaces views = ct.bind(b, g);
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int d = 0; d < 3; ++d) {
+    std::fill(b.data(g.flux[d]), b.data(g.flux[d]) + b.size(g.flux[d]), nan);
+    std::fill(ct.data(d), ct.data(d) + ct.size(d), nan);
+  }
   RhsSettings s;
-  compute_block_fluxes_mhd(eos::EOS(eos::IdealGas(kGamma)), s, g, mg, b, emfs);
+  compute_block_fluxes_mhd(eos::EOS(eos::IdealGas(kGamma)), s, g, mg, views, b, emfs);
   FaceData out;
   for (int d = 0; d < 3; ++d) {
     out.flux[d].assign(b.data(g.flux[d]), b.data(g.flux[d]) + b.size(g.flux[d]));
-    out.ct[d].assign(b.data(mg.ct[d]), b.data(mg.ct[d]) + b.size(mg.ct[d]));
+    out.ct[d].assign(ct.data(d), ct.data(d) + ct.size(d));
   }
   return out;
 }
@@ -85,13 +89,15 @@ FaceData sweep(Block& b, const Groups& g, const MhdGroups& mg, EmfScheme emfs) {
 void expect_uct_hll_outputs(Block& b, const Groups& g, const MhdGroups& mg, std::uint64_t seed) {
   fill_random_state(b, g, mg, seed);
   const bool all_used = direction_used(b, 0) && direction_used(b, 1) && direction_used(b, 2);
-  const FaceData full = sweep(b, g, mg, EmfScheme::arithmetic);
-  const FaceData fast = sweep(b, g, mg, EmfScheme::uct_hll);
+  CtFaceStorage ct;
+  const CtFaces views = ct.bind(b, g);
+  const FaceData full = sweep(b, g, mg, ct, EmfScheme::arithmetic);
+  const FaceData fast = sweep(b, g, mg, ct, EmfScheme::uct_hll);
   int differ = 0, ghost_speeds = 0, ghost_fluxes_left = 0, ghost_fluxes = 0, induction = 0, induction_left = 0;
   for (int d = 0; d < 3; ++d) {
     if (!direction_used(b, d)) continue;
-    const Field f0 = b.field(g.flux[d], 0), c0 = b.field(mg.ct[d], 0);
-    const std::size_t nf = b.points_per_component(g.flux[d]), nc = b.points_per_component(mg.ct[d]);
+    const Field f0 = b.field(g.flux[d], 0), c0 = views.f[d][0];
+    const std::size_t nf = b.points_per_component(g.flux[d]), nc = nf;  // shaped as the flux groups
     int lo[3], hi[3];  // faces 0..n along d, one ghost layer in the used transverse directions
     for (int e = 0; e < 3; ++e) {
       lo[e] = e == d || !direction_used(b, e) ? 0 : -1;
@@ -105,7 +111,7 @@ void expect_uct_hll_outputs(Block& b, const Groups& g, const MhdGroups& mg, std:
           for (int e = 0; e < 3; ++e)
             if (e != d) ghost = ghost || id[e] < 0 || id[e] >= b.n[e];
           const std::size_t of = static_cast<std::size_t>(&f0(i, j, k) - b.data(g.flux[d]));
-          const std::size_t oc = static_cast<std::size_t>(&c0(i, j, k) - b.data(mg.ct[d]));
+          const std::size_t oc = static_cast<std::size_t>(&c0(i, j, k) - ct.data(d));
           for (int q = 0; q < kNumCt; ++q) {
             const double want = full.ct[d][q * nc + oc], got = fast.ct[d][q * nc + oc];
             const bool speed = q <= kVtRight;
@@ -136,11 +142,11 @@ void expect_uct_hll_outputs(Block& b, const Groups& g, const MhdGroups& mg, std:
   else EXPECT_EQ(induction_left, 0) << "the 1D fluxes of the edges with an unused direction";
   // The EMFs read only what both sweeps computed alike.
   std::vector<double> emf_full[3];
-  sweep(b, g, mg, EmfScheme::arithmetic);
-  edge_emfs(EmfScheme::uct_hll, mg, b);
+  sweep(b, g, mg, ct, EmfScheme::arithmetic);
+  edge_emfs(EmfScheme::uct_hll, mg, views, b);
   for (int c = 0; c < 3; ++c) emf_full[c].assign(b.data(mg.emf[c]), b.data(mg.emf[c]) + b.size(mg.emf[c]));
-  sweep(b, g, mg, EmfScheme::uct_hll);
-  edge_emfs(EmfScheme::uct_hll, mg, b);
+  sweep(b, g, mg, ct, EmfScheme::uct_hll);
+  edge_emfs(EmfScheme::uct_hll, mg, views, b);
   int emf_differ = 0, emf_nan = 0;
   for (int c = 0; c < 3; ++c)
     for (std::size_t i = 0; i < emf_full[c].size(); ++i) {

@@ -83,7 +83,8 @@ Imbalance imbalance(const Setup& st, int n, bool well_balanced, bool mhd) {
   wb.faces = s.metric_faces;
   wb.isentrope.gamma = kGamma;
   if (mhd) {  // zero field: the magnetised sweep and sources
-    compute_block_fluxes_mhd(eos::EOS(gas), s, g, mg, b);
+    CtFaceStorage ct;
+    compute_block_fluxes_mhd(eos::EOS(gas), s, g, mg, ct.bind(b, g), b);
     compute_block_rhs_mhd(g, mg.bvec, b, wb);
   } else {
     compute_block_fluxes(eos::EOS(gas), s, g, b);
