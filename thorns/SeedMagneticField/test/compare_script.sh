@@ -14,19 +14,20 @@ python=$(head -1 "$src/utils/compare_magnetized_tov" | sed 's/^#!//')
 if ! "$python" -c 'import numpy' 2>/dev/null; then echo "skip: $python has no numpy"; exit 0; fi
 tool="$src/utils/compare_magnetized_tov"
 
-# run NAME DX DT OFFSET REFLECTS: exact rho_c/rho_c0 = 1 - 0.01 sin(t/20), E_mag/E_mag0 = 1 - 1e-4 t, plus
-# (0.5 dx^2 + OFFSET) t / 200 * (1, 2) (OFFSET: a 2D run's own error), output every DT up to t = 200.
+# run NAME DX DT OFFSET REFLECTS [P]: exact rho_c/rho_c0 = 1 - 0.01 sin(t/20), E_mag/E_mag0 = 1 - 1e-4 t, plus
+# (0.5 dx^P + OFFSET) t / 200 * (1, 2) (OFFSET: a 2D run's own error; P = 2 unless given), output every DT up
+# to t = 200.
 run() {
   mkdir -p "$tmp/$1"
-  "$python" - "$tmp/$1/analysis.tsv" "$2" "$3" "$4" <<'PY'
+  "$python" - "$tmp/$1/analysis.tsv" "$2" "$3" "$4" "${6:-2}" <<'PY'
 import math, sys
-path, dx, dt, off = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
+path, dx, dt, off, power = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4]), float(sys.argv[5])
 with open(path, "w") as f:
     f.write("# iteration\ttime\trho_c\tdivB_max\tE_mag\n")
     n = int(round(200 / dt))
     for i in range(n + 1):
         t = i * dt
-        e = (0.5 * dx * dx + off) * t / 200
+        e = (0.5 * dx ** power + off) * t / 200
         f.write("%d\t%.17g\t%.17g\t0\t%.17g\n" % (i, t, 1.28e-3 * (1 - 0.01 * math.sin(t / 20) + e),
                                                    5e-8 * (1 - 1e-4 * t + 2 * e)))
 PY
@@ -61,6 +62,22 @@ rc=$?
 echo "$out"
 [ $rc = 1 ] || fail "a 2D run 0.3 off should disagree (status $rc)"
 grep -q "order 1.00 (assumed (conservative))" <<<"$out" && grep -q "cyl_bad .*: DISAGREE" <<<"$out" || fail "two-run verdict"
+
+# Errors of order 4 in the 3D runs: the tool infers 4.00, so the fine run's error is its true one,
+# 0.5 0.375^4 = 9.888e-3, and the 2D run (0.02 off the exact history: 1.011e-2 from the fine run) disagrees;
+# the note gives the formal order 2's error, 0.5 (0.5^4 - 0.375^4) / ((4/3)^2 - 1) = 2.747e-2, and agree.
+run q4_fine 0.375 0.5 0 "$octant" 4
+run q4_mid 0.5 1.0 0 "$octant" 4
+run q4_coarse 0.75 2.0 0 "$octant" 4
+out=$("$tool" --cart "$tmp/q4_fine/analysis.tsv" --dx 0.375 --cart "$tmp/q4_mid/analysis.tsv" --dx 0.5 --cart "$tmp/q4_coarse/analysis.tsv" --dx 0.75 "$tmp/cyl_good/analysis.tsv" 2>&1)
+rc=$?
+echo "$out"
+[ $rc = 1 ] || fail "the 2D run is outside the order-4 error (status $rc)"
+grep -q "rho_c: .*order 4.00 (from three resolutions) -> 3D resolution error 9.888e-03" <<<"$out" || fail "order 4 inferred"
+grep -q "cyl_good .*max|Delta rho_c/rho_c(0)| = 1.011e-02.*: DISAGREE" <<<"$out" || fail "order-4 verdict"
+grep -q "note: the inferred order 4.00 exceeds the formal order 2.00 (is q4_coarse outside the convergent range?); at order 2.00 the error is 2.747e-02: cyl_good agree (1.011e-02)" <<<"$out" || fail "formal-order note"
+out=$("$tool" --cart "$tmp/cart_fine/analysis.tsv" --dx 0.375 --cart "$tmp/cart_mid/analysis.tsv" --dx 0.5 --cart "$tmp/cart_coarse/analysis.tsv" --dx 0.75 "$tmp/cyl_good/analysis.tsv" 2>&1)
+grep -q "note:" <<<"$out" && fail "no note at the formal order"
 
 printf '# iteration\ttime\trho_c\n0\t0\t1\n1\t1\t1\n' > "$tmp/hydro.tsv"
 out=$("$tool" --cart "$tmp/cart_fine/analysis.tsv" --dx 0.375 --cart "$tmp/cart_coarse/analysis.tsv" --dx 0.75 "$tmp/hydro.tsv" 2>&1)
