@@ -40,11 +40,17 @@ run cart_coarse 0.75 2.0 0 "$octant"
 run cyl_good 0 0.3 0.02 '"axis", "reflect", "outflow"'
 run cyl_bad 0 0.3 -0.3 '"axis", "reflect", "outflow"'
 fail() { echo "FAIL: $1"; echo "$out"; exit 1; }
+# compare_three PREFIX: the tool on the runs PREFIX_fine, PREFIX_mid, PREFIX_coarse and cyl_good (sets out, rc).
+compare_three() {
+  out=$("$tool" --cart "$tmp/$1_fine/analysis.tsv" --dx 0.375 --cart "$tmp/$1_mid/analysis.tsv" --dx 0.5 \
+        --cart "$tmp/$1_coarse/analysis.tsv" --dx 0.75 "$tmp/cyl_good/analysis.tsv" 2>&1)
+  rc=$?
+  echo "$out"
+}
 
-out=$("$tool" --cart "$tmp/cart_fine/analysis.tsv" --dx 0.375 --cart "$tmp/cart_mid/analysis.tsv" --dx 0.5 --cart "$tmp/cart_coarse/analysis.tsv" --dx 0.75 "$tmp/cyl_good/analysis.tsv" 2>&1)
-rc=$?
-echo "$out"
+compare_three cart
 [ $rc = 0 ] || fail "a 2D run within the 3D error should agree (status $rc)"
+grep -q "note:" <<<"$out" && fail "no note at the formal order"
 # Fine run's error C dx^2 t_end = 0.5 * 0.140625 = 0.07031 (rho_c), twice that for E_mag; order 2.
 grep -q "rho_c: .*order 2.00 (from three resolutions) -> 3D resolution error 7.031e-02" <<<"$out" || fail "rho_c order/error"
 grep -q "E_mag: .*order 2.00 (from three resolutions) -> 3D resolution error 1.406e-01" <<<"$out" || fail "E_mag order/error"
@@ -69,15 +75,11 @@ grep -q "order 1.00 (assumed (conservative))" <<<"$out" && grep -q "cyl_bad .*: 
 run q4_fine 0.375 0.5 0 "$octant" 4
 run q4_mid 0.5 1.0 0 "$octant" 4
 run q4_coarse 0.75 2.0 0 "$octant" 4
-out=$("$tool" --cart "$tmp/q4_fine/analysis.tsv" --dx 0.375 --cart "$tmp/q4_mid/analysis.tsv" --dx 0.5 --cart "$tmp/q4_coarse/analysis.tsv" --dx 0.75 "$tmp/cyl_good/analysis.tsv" 2>&1)
-rc=$?
-echo "$out"
+compare_three q4
 [ $rc = 1 ] || fail "the 2D run is outside the order-4 error (status $rc)"
 grep -q "rho_c: .*order 4.00 (from three resolutions) -> 3D resolution error 9.888e-03" <<<"$out" || fail "order 4 inferred"
 grep -q "cyl_good .*max|Delta rho_c/rho_c(0)| = 1.011e-02.*: DISAGREE" <<<"$out" || fail "order-4 verdict"
 grep -q "note: the inferred order 4.00 exceeds the formal order 2.00 (is q4_coarse outside the convergent range?); at order 2.00 the error is 2.747e-02: cyl_good agree (1.011e-02)" <<<"$out" || fail "formal-order note"
-out=$("$tool" --cart "$tmp/cart_fine/analysis.tsv" --dx 0.375 --cart "$tmp/cart_mid/analysis.tsv" --dx 0.5 --cart "$tmp/cart_coarse/analysis.tsv" --dx 0.75 "$tmp/cyl_good/analysis.tsv" 2>&1)
-grep -q "note:" <<<"$out" && fail "no note at the formal order"
 
 printf '# iteration\ttime\trho_c\n0\t0\t1\n1\t1\t1\n' > "$tmp/hydro.tsv"
 out=$("$tool" --cart "$tmp/cart_fine/analysis.tsv" --dx 0.375 --cart "$tmp/cart_coarse/analysis.tsv" --dx 0.75 "$tmp/hydro.tsv" 2>&1)
